@@ -1,0 +1,113 @@
+#include "test_meshes.h"
+
+#include "corner_table.h"
+
+#include <vcg/complex/algorithms/create/platonic.h>
+#include <wrap/io_trimesh/import_off.h>
+
+#include <random>
+#include <set>
+#include <stdexcept>
+
+namespace hht::test {
+
+namespace {
+ArrayMesh from_vcg(const TriMesh& m) {
+  ArrayMesh a;
+  mesh_to_arrays(m, a.positions, a.faces);
+  return a;
+}
+}  // namespace
+
+ArrayMesh load_data_mesh(const std::string& name) {
+  TriMesh m;
+  const std::string path = std::string(HHT_DATA_DIR) + "/" + name + ".off";
+  if (vcg::tri::io::ImporterOFF<TriMesh>::Open(m, path.c_str()) != 0)
+    throw std::runtime_error("cannot read " + path + " (run scripts/setup.sh)");
+  return from_vcg(m);
+}
+
+ArrayMesh sphere(int subdivisions, double radius) {
+  TriMesh m;
+  vcg::tri::Sphere(m, subdivisions);
+  ArrayMesh a = from_vcg(m);
+  a.positions *= radius;
+  return a;
+}
+
+ArrayMesh torus(double major, double minor, int major_steps, int minor_steps) {
+  TriMesh m;
+  vcg::tri::Torus(m, major, minor, major_steps, minor_steps);
+  return from_vcg(m);
+}
+
+ArrayMesh remove_faces(const ArrayMesh& m, int every) {
+  // Drop a face and its edge neighbours every `every` faces: separate holes of a few faces.
+  CornerTable t;
+  int inconsistent = 0;
+  std::string error;
+  build_corner_table(m.faces, m.vertices(), t, inconsistent, error);
+  std::vector<char> drop(m.faces.rows(), 0), touched(m.vertices(), 0);
+  for (Eigen::Index f = 0; f < m.faces.rows(); f += every) {
+    bool free = true;  // keep holes apart so no vertex joins two of them
+    for (int c = 3 * f; c < 3 * f + 3; ++c)
+      for (int k : {c, t.opposite[c]})
+        for (int j = 3 * (k / 3); j < 3 * (k / 3) + 3; ++j) free = free && !touched[t.vertex[j]];
+    if (!free) continue;
+    drop[f] = 1;
+    for (int c = 3 * f; c < 3 * f + 3; ++c) {
+      drop[t.opposite[c] / 3] = 1;
+      for (int k : {c, t.opposite[c]})
+        for (int j = 3 * (k / 3); j < 3 * (k / 3) + 3; ++j) touched[t.vertex[j]] = 1;
+    }
+  }
+  ArrayMesh out;
+  out.positions = m.positions;
+  out.faces.resize(m.faces.rows(), 3);
+  Eigen::Index n = 0;
+  for (Eigen::Index f = 0; f < m.faces.rows(); ++f)
+    if (!drop[f]) out.faces.row(n++) = m.faces.row(f);
+  out.faces.conservativeResize(n, 3);
+  return out;
+}
+
+ArrayMesh disjoint_union(const ArrayMesh& a, const ArrayMesh& b) {
+  ArrayMesh u;
+  u.positions.resize(a.positions.rows() + b.positions.rows(), 3);
+  u.positions << a.positions, b.positions;
+  u.faces.resize(a.faces.rows() + b.faces.rows(), 3);
+  u.faces << a.faces, (b.faces.array() + a.vertices()).matrix();
+  return u;
+}
+
+ArrayMesh flip_random_edges(const ArrayMesh& m, int flips, unsigned seed) {
+  ArrayMesh out = m;
+  CornerTable t;
+  int inconsistent = 0;
+  std::string error;
+  build_corner_table(out.faces, out.vertices(), t, inconsistent, error);
+  std::set<std::pair<int, int>> edges;
+  for (Eigen::Index f = 0; f < out.faces.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = out.faces(f, k), b = out.faces(f, (k + 1) % 3);
+      edges.insert({std::min(a, b), std::max(a, b)});
+    }
+  std::vector<char> used(out.faces.rows(), 0);
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> pick(0, t.corners() - 1);
+  for (int tries = 0, done = 0; done < flips && tries < 100 * flips; ++tries) {
+    const int c = pick(rng), o = t.opposite[c];
+    if (o < 0 || used[c / 3] || used[o / 3]) continue;
+    const int x = t.vertex[c], a = t.vertex[corner_next(c)], b = t.vertex[corner_prev(c)], y = t.vertex[o];
+    if (x == y || edges.count({std::min(x, y), std::max(x, y)})) continue;
+    out.faces.row(c / 3) << x, a, y;  // (x,a,b) + (y,b,a) -> (x,a,y) + (y,b,x)
+    out.faces.row(o / 3) << y, b, x;
+    edges.erase({std::min(a, b), std::max(a, b)});
+    edges.insert({std::min(x, y), std::max(x, y)});
+    used[c / 3] = used[o / 3] = 1;
+    ++done;
+  }
+  return out;
+}
+
+}  // namespace hht::test

@@ -1,0 +1,25 @@
+// Meshes for the unit tests: the real ones from libcgal-demo (extracted into data/ by
+// scripts/setup.sh) and generated ones.
+#pragma once
+
+#include "mesh_arrays.h"
+#include "tri_mesh.h"
+
+#include <string>
+
+namespace hht::test {
+
+struct ArrayMesh {
+  Positions positions;
+  Faces faces;
+  int vertices() const { return static_cast<int>(positions.rows()); }
+};
+
+ArrayMesh load_data_mesh(const std::string& name);  // e.g. "fandisk" -> data/fandisk.off
+ArrayMesh sphere(int subdivisions, double radius = 1.0);
+ArrayMesh torus(double major, double minor, int major_steps, int minor_steps);
+ArrayMesh remove_faces(const ArrayMesh& m, int every);  // drop every `every`-th face region: holes
+ArrayMesh disjoint_union(const ArrayMesh& a, const ArrayMesh& b);
+ArrayMesh flip_random_edges(const ArrayMesh& m, int flips, unsigned seed);
+
+}  // namespace hht::test
