@@ -1,0 +1,59 @@
+// "HHT: Curvature Signal": the paper's per-vertex signal G = <L V, n> (= 2H), into quality.
+#include "filter_spec.h"
+#include "mesh_adapter.h"
+
+#include "mean_curvature.h"
+
+namespace hht_plugin {
+
+namespace {
+
+void declare(MeshDocument&, RichParameterList& p) {
+  p.addParam(RichFloat("rampPercentile", 2.0f, "Colour ramp clipping (%)",
+                       "The colour ramp spans the values between this percentile and its complement "
+                       "(2 -> 2nd to 98th percentile), so a few extreme vertices do not flatten it."));
+}
+
+bool apply(FilterRun& run) {
+  Stopwatch clock;
+  MeshModel& model = *run.document.mm();
+  hht::Positions positions;
+  hht::Faces faces;
+  if (!read_triangle_mesh(model.cm, positions, faces, run.error)) return false;
+
+  run.report(10, "Cotangent Laplacian and mixed Voronoi areas");
+  hht::MeanCurvature curvature;
+  std::string message;
+  if (!hht::mean_curvature(positions, faces, curvature, message)) {
+    run.error = QString::fromStdString("Nothing was changed: " + message + ".");
+    return false;
+  }
+  run.report(90, "Writing the signal into vertex quality");
+  const auto range = show_as_quality(model, curvature.signal, run.parameters.getFloat("rampPercentile"));
+  const Eigen::VectorXd& g = curvature.signal;
+  run.log(QString("Curvature signal G = <L V, n> = 2H on %1 vertices: min %2, max %3, mean %4; "
+                  "colour ramp over [%5, %6]; %7 s")
+              .arg(g.size()).arg(g.minCoeff()).arg(g.maxCoeff()).arg(g.mean())
+              .arg(range.first).arg(range.second).arg(clock.seconds(), 0, 'f', 3));
+  return true;
+}
+
+}  // namespace
+
+FilterSpec curvature_signal_filter() {
+  return {"HHT: Curvature Signal",
+          "Computes the signal the HHT pipeline decomposes (step 2): G<sub>i</sub> = &lt;(L V)<sub>i</sub>, "
+          "n<sub>i</sub>&gt;, the normal component of the cotangent Laplacian L = M<sup>-1</sup>C (mixed Voronoi "
+          "areas M, Meyer et al. 2003) at each vertex, with area-weighted vertex normals n. "
+          "<b>Convention: G = 2H</b>, twice the mean curvature: 2/r on a sphere of radius r with outward normals, "
+          "negative in concave regions. It is the same quantity the reconstruction of the HHT filters uses.<br>"
+          "Written into vertex quality and shown as a colour ramp over a robust percentile range.",
+          MeshFilterInterface::FilterClass(MeshFilterInterface::Quality | MeshFilterInterface::VertexColoring |
+                                           MeshFilterInterface::Normal),
+          MeshFilterInterface::SINGLE_MESH,
+          MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR,
+          declare,
+          apply};
+}
+
+}  // namespace hht_plugin

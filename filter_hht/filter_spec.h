@@ -1,0 +1,37 @@
+// What each filter of the plugin declares: its name, description, menu class, parameters
+// and the function that applies it. The plugin class only dispatches over these.
+#pragma once
+
+#include <common/interfaces.h>
+
+#include <functional>
+
+namespace hht_plugin {
+
+struct FilterRun {
+  MeshDocument& document;
+  const RichParameterList& parameters;
+  vcg::CallBackPos* progress;
+  std::function<void(const QString&)> log;
+  QString& error;  // set before returning false; the mesh must then be as it was
+
+  void report(int percent, const char* stage) const {
+    if (progress) progress(percent, stage);
+  }
+};
+
+struct FilterSpec {
+  QString name;
+  QString info;
+  MeshFilterInterface::FilterClass menu_class;
+  MeshFilterInterface::FILTER_ARITY arity;
+  int post_condition;  // MeshModel::MM_* bits the filter changes
+  std::function<void(MeshDocument&, RichParameterList&)> declare_parameters;
+  std::function<bool(FilterRun&)> apply;
+};
+
+// One per filter, each in its own file.
+FilterSpec hamiltonian_cycle_filter();
+FilterSpec curvature_signal_filter();
+
+}  // namespace hht_plugin

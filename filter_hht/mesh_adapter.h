@@ -1,0 +1,37 @@
+// MeshLab-side helpers shared by the filters: reading the current mesh into arrays, showing
+// a per-vertex scalar as quality with a colour ramp, and timing stages for the log.
+#pragma once
+
+#include "mesh_arrays.h"
+
+#include <common/meshmodel.h>
+
+#include <Eigen/Core>
+
+#include <chrono>
+
+namespace hht_plugin {
+
+// Arrays of `m`'s live vertices and faces; fails with a message on an empty or broken mesh.
+bool read_triangle_mesh(const CMeshO& m, hht::Positions& positions, hht::Faces& faces, QString& error);
+
+// Writes `values` (one per live vertex) into vertex quality and colours the mesh by a ramp
+// over their [percent, 100 - percent] percentile range, returned.
+std::pair<double, double> show_as_quality(MeshModel& model, const Eigen::VectorXd& values, double percent);
+
+class Stopwatch {
+ public:
+  double seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+  double lap() {
+    const double s = seconds();
+    start_ = std::chrono::steady_clock::now();
+    return s;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace hht_plugin

@@ -1,0 +1,30 @@
+// Runs the staged meshlabserver (under xvfb-run) on a script and reads back what it saved.
+#pragma once
+
+#include "mesh_arrays.h"
+#include "tri_mesh.h"
+
+#include <string>
+
+namespace hht::test {
+
+struct ServerRun {
+  int exit_code = -1;
+  std::string log;      // everything meshlabserver printed
+  std::string output;   // the saved mesh, if any
+};
+
+// Runs `script` (a path) on `input`, saving vertex quality and colour to a PLY named after
+// `tag` in the test output folder.
+ServerRun run_meshlabserver(const std::string& input, const std::string& script, const std::string& tag);
+
+std::string resource(const std::string& name);   // resources/<name>
+std::string data_mesh(const std::string& name);  // data/<name>.off
+std::string output_path(const std::string& file);
+
+// Loads a PLY with vertex quality; fails the calling test when it cannot.
+bool load_ply(const std::string& path, TriMesh& m, bool& has_quality);
+
+std::string write_script(const std::string& tag, const std::string& body);  // a one-off .mlx
+
+}  // namespace hht::test
