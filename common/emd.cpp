@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <exception>
 #include <limits>
 #include <stdexcept>
+#include <thread>
 
 #include "cubic_spline.h"
 
@@ -78,6 +80,8 @@ void find_extrema(const double* s, int n, SignalBoundary boundary, const unsigne
   }
 }
 
+// Below this length a thread's start costs about what fitting one envelope takes.
+constexpr int kParallelFrom = 1 << 16;
 constexpr int kMirrored = 2;  // extrema of each kind mirrored beyond each end of an open signal
 
 // Knots beyond one end of an open signal, innermost first.
@@ -152,7 +156,8 @@ class Sifter {
   Sifter(int n, const EmdOptions& options)
       : n_(n),
         boundary_(options.boundary),
-        never_(options.never_extremum != nullptr ? options.never_extremum->data() : nullptr) {
+        never_(options.never_extremum != nullptr ? options.never_extremum->data() : nullptr),
+        parallel_(options.threads >= 2 && n >= kParallelFrom) {
     upper_.resize(n);
     lower_.resize(n);
   }
@@ -170,12 +175,40 @@ class Sifter {
     if (boundary_ == SignalBoundary::Periodic) {
       knots(s, extrema_.maxima, upper_x_, upper_y_);
       knots(s, extrema_.minima, lower_x_, lower_y_);
-      periodic_cubic_spline(upper_x_, upper_y_, n_, upper_, upper_ws_);
-      periodic_cubic_spline(lower_x_, lower_y_, n_, lower_, lower_ws_);
     } else {
       mirrored_knots(s);
-      not_a_knot_cubic_spline(upper_x_, upper_y_, n_, upper_, upper_ws_);
-      not_a_knot_cubic_spline(lower_x_, lower_y_, n_, lower_, lower_ws_);
+    }
+    auto fit = [this](bool upper) {
+      const std::vector<double>& x = upper ? upper_x_ : lower_x_;
+      const std::vector<double>& y = upper ? upper_y_ : lower_y_;
+      std::vector<double>& out = upper ? upper_ : lower_;
+      CubicSplineWorkspace& ws = upper ? upper_ws_ : lower_ws_;
+      if (boundary_ == SignalBoundary::Periodic) {
+        periodic_cubic_spline(x, y, n_, out, ws);
+      } else {
+        not_a_knot_cubic_spline(x, y, n_, out, ws);
+      }
+    };
+    if (parallel_) {
+      std::exception_ptr lower_failure;
+      std::thread lower([&] {
+        try {
+          fit(false);
+        } catch (...) {
+          lower_failure = std::current_exception();
+        }
+      });
+      try {
+        fit(true);
+      } catch (...) {
+        lower.join();
+        throw;
+      }
+      lower.join();
+      if (lower_failure) std::rethrow_exception(lower_failure);
+    } else {
+      fit(true);
+      fit(false);
     }
     double change = 0.0, before = 0.0;
     double* v = s.data();
@@ -246,6 +279,7 @@ class Sifter {
   int n_;
   SignalBoundary boundary_;
   const unsigned char* never_;
+  bool parallel_;
   Extrema extrema_;
   std::vector<double> upper_x_, upper_y_, lower_x_, lower_y_, upper_, lower_;
   CubicSplineWorkspace upper_ws_, lower_ws_;

@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <exception>
 #include <mutex>
 #include <stdexcept>
+#include <thread>
 
 namespace hht {
 namespace {
@@ -19,14 +21,15 @@ std::mutex& planner_mutex() {
 
 std::atomic<long> plan_count{0};
 
-constexpr double kTwoPi = 6.283185307179586476925286766559;
+constexpr double kPi = 3.14159265358979323846264338327950288;
 
 }  // namespace
 
 struct HilbertTransformer::Plans {
   int n;
-  double* real;
-  fftw_complex* spectrum;  // n entries: the r2c half spectrum, then the full analytic spectrum
+  double* signal;         // x
+  fftw_complex* half;     // its half spectrum X[0..n/2], then -i sgn(k) X[k]
+  double* transform;      // n H[x] (FFTW's transforms are unnormalised)
   fftw_plan forward, backward;
 };
 
@@ -34,12 +37,12 @@ HilbertTransformer::HilbertTransformer(int n) {
   if (n < 1) throw std::invalid_argument("HilbertTransformer: need at least one sample");
   plans_ = std::make_unique<Plans>();
   plans_->n = n;
-  plans_->real = fftw_alloc_real(n);
-  plans_->spectrum = fftw_alloc_complex(n);
+  plans_->signal = fftw_alloc_real(n);
+  plans_->half = fftw_alloc_complex(n / 2 + 1);
+  plans_->transform = fftw_alloc_real(n);
   std::lock_guard<std::mutex> lock(planner_mutex());
-  plans_->forward = fftw_plan_dft_r2c_1d(n, plans_->real, plans_->spectrum, FFTW_ESTIMATE);
-  plans_->backward = fftw_plan_dft_1d(n, plans_->spectrum, plans_->spectrum, FFTW_BACKWARD,
-                                      FFTW_ESTIMATE);
+  plans_->forward = fftw_plan_dft_r2c_1d(n, plans_->signal, plans_->half, FFTW_ESTIMATE);
+  plans_->backward = fftw_plan_dft_c2r_1d(n, plans_->half, plans_->transform, FFTW_ESTIMATE);
   plan_count += 2;
 }
 
@@ -47,57 +50,76 @@ HilbertTransformer::~HilbertTransformer() {
   std::lock_guard<std::mutex> lock(planner_mutex());
   fftw_destroy_plan(plans_->forward);
   fftw_destroy_plan(plans_->backward);
-  fftw_free(plans_->real);
-  fftw_free(plans_->spectrum);
+  fftw_free(plans_->signal);
+  fftw_free(plans_->half);
+  fftw_free(plans_->transform);
 }
 
 int HilbertTransformer::size() const { return plans_->n; }
 
 long HilbertTransformer::plans_created() { return plan_count.load(); }
 
-void HilbertTransformer::analytic_signal(const std::vector<double>& x,
-                                         std::vector<std::complex<double>>& z) {
+// The analytic spectrum (DC, Nyquist x1; positive x2; negative x0) has x as its real part and
+// H[x] as its imaginary part, where H multiplies X[k] by -i sgn(k) with sgn = 0 at DC and
+// Nyquist. H[x] is real, so one real-to-complex and one complex-to-real transform give it, at
+// about half the cost of a full complex inverse transform; and Re z is x itself, exactly.
+const double* HilbertTransformer::hilbert_transform_times_n(const std::vector<double>& x) {
   const int n = plans_->n;
   if (static_cast<int>(x.size()) != n) {
     throw std::invalid_argument("HilbertTransformer: signal length differs from the plan's");
   }
-  std::copy(x.begin(), x.end(), plans_->real);
+  std::copy(x.begin(), x.end(), plans_->signal);
   fftw_execute(plans_->forward);
-  // Bins 1..(n-1)/2 are the positive frequencies; bin n/2 of an even n is Nyquist (weight 1).
-  fftw_complex* X = plans_->spectrum;
-  const int positive_end = (n + 1) / 2;
+  fftw_complex* X = plans_->half;
+  X[0][0] = X[0][1] = 0.0;
+  const int positive_end = (n + 1) / 2;  // bins 1..(n-1)/2; bin n/2 of an even n is Nyquist
   for (int k = 1; k < positive_end; ++k) {
-    X[k][0] *= 2.0;
-    X[k][1] *= 2.0;
+    const double re = X[k][0];
+    X[k][0] = X[k][1];
+    X[k][1] = -re;
   }
-  for (int k = n / 2 + 1; k < n; ++k) X[k][0] = X[k][1] = 0.0;
+  if (n % 2 == 0) X[n / 2][0] = X[n / 2][1] = 0.0;
   fftw_execute(plans_->backward);
+  return plans_->transform;
+}
+
+void HilbertTransformer::analytic_signal(const std::vector<double>& x,
+                                         std::vector<std::complex<double>>& z) {
+  const double* h = hilbert_transform_times_n(x);
+  const int n = plans_->n;
+  const double scale = 1.0 / n;
   z.resize(n);
-  const double scale = 1.0 / n;  // FFTW's transforms are unnormalised
-  for (int t = 0; t < n; ++t) z[t] = {X[t][0] * scale, X[t][1] * scale};
+  for (int t = 0; t < n; ++t) z[t] = {x[t], h[t] * scale};
 }
 
 HilbertSpectrum HilbertTransformer::spectrum(const std::vector<double>& imf,
                                              SignalBoundary boundary) {
-  analytic_signal(imf, z_);
+  const double* h = hilbert_transform_times_n(imf);
   const int n = plans_->n;
+  const double scale = 1.0 / n;
   HilbertSpectrum s;
   s.amplitude.resize(n);
   s.phase.resize(n);
   s.frequency.resize(n);
   double squares = 0.0;
   for (int t = 0; t < n; ++t) {
-    s.amplitude[t] = std::abs(z_[t]);
-    s.phase[t] = std::arg(z_[t]);
-    squares += s.amplitude[t] * s.amplitude[t];
+    const double re = imf[t], im = h[t] * scale;
+    const double a2 = re * re + im * im;
+    s.amplitude[t] = std::sqrt(a2);
+    s.phase[t] = std::atan2(im, re);
+    squares += a2;
   }
-  // Open signals have no successor for the last sample: it copies its predecessor at the end.
+  // arg(z[t+1] conj z[t]) is the phase step wrapped into (-pi, pi]: computed from the phases,
+  // it costs no second atan2 per sample. Open signals have no successor for the last sample:
+  // it copies its predecessor at the end.
   const int own = boundary == SignalBoundary::Open && n > 1 ? n - 1 : n;
   for (int t = 0; t < own; ++t) {
-    const int next = t + 1 < n ? t + 1 : 0;
-    s.frequency[t] = std::arg(z_[next] * std::conj(z_[t])) / kTwoPi;
+    double step = s.phase[t + 1 < n ? t + 1 : 0] - s.phase[t];
+    if (step > kPi) step -= 2.0 * kPi;
+    if (step <= -kPi) step += 2.0 * kPi;
+    s.frequency[t] = step / (2.0 * kPi);
   }
-  // arg() lies in [-pi, pi], so a meaningful frequency already lies in [0, 0.5].
+  // Steps lie in (-pi, pi], so a meaningful frequency already lies in [0, 0.5].
   const double amplitude_floor = 1e-3 * std::sqrt(squares / n);
   auto meaningful = [&](int t) {
     return s.amplitude[t] >= amplitude_floor && s.frequency[t] >= 0.0;
@@ -118,12 +140,33 @@ HilbertSpectrum HilbertTransformer::spectrum(const std::vector<double>& imf,
 }
 
 std::vector<HilbertSpectrum> hilbert_spectra(const std::vector<std::vector<double>>& imfs,
-                                             SignalBoundary boundary) {
-  std::vector<HilbertSpectrum> spectra;
+                                             SignalBoundary boundary, int threads) {
+  std::vector<HilbertSpectrum> spectra(imfs.size());
   if (imfs.empty()) return spectra;
-  HilbertTransformer transformer(static_cast<int>(imfs.front().size()));
-  spectra.reserve(imfs.size());
-  for (const std::vector<double>& imf : imfs) spectra.push_back(transformer.spectrum(imf, boundary));
+  const size_t n = imfs.front().size();
+  for (const std::vector<double>& imf : imfs) {
+    if (imf.size() != n) throw std::invalid_argument("hilbert_spectra: IMFs of unequal lengths");
+  }
+  // IMFs are independent: worker w takes IMFs w, w + workers, ... with its own plans.
+  const int workers = static_cast<int>(std::clamp<size_t>(std::max(threads, 1), 1, imfs.size()));
+  std::vector<std::exception_ptr> failures(workers);
+  auto work = [&](int w) {
+    try {
+      HilbertTransformer transformer(static_cast<int>(n));
+      for (size_t i = w; i < imfs.size(); i += workers) {
+        spectra[i] = transformer.spectrum(imfs[i], boundary);
+      }
+    } catch (...) {
+      failures[w] = std::current_exception();
+    }
+  };
+  std::vector<std::thread> helpers;
+  for (int w = 1; w < workers; ++w) helpers.emplace_back(work, w);
+  work(0);
+  for (std::thread& h : helpers) h.join();
+  for (const std::exception_ptr& f : failures) {
+    if (f) std::rethrow_exception(f);
+  }
   return spectra;
 }
 

@@ -3,13 +3,17 @@
 // analytic signal z = x + i H[x], computed by FFT.
 //
 // Analytic signal: X = FFT(x); DC (and Nyquist for even n) kept with weight 1, positive
-// frequencies doubled, negative ones zeroed; z = IFFT. The FFT sees x as one period of a
-// periodic signal: exact for a Hamiltonian cycle's signal; for an open path the ends carry the
-// usual end effect of a jump between the last and the first sample. Re z == x to rounding.
+// frequencies doubled, negative ones zeroed; z = IFFT. Computed as z = x + i H[x] with
+// H[x] = IFFT(-i sgn(k) X[k]) by a real-to-complex and a complex-to-real FFT, so Re z == x
+// exactly. The FFT sees x as one period of a periodic signal: exact for a Hamiltonian cycle's
+// signal; for an open path the ends carry the usual end effect of the jump between the last
+// and the first sample.
 //
 // Per sample t:  amplitude a = |z|,  phase theta = arg z in (-pi, pi],
 //   frequency omega[t] = arg(z[t+1] conj(z[t])) / (2 pi)   in cycles per sample,
-// with t+1 taken modulo n (Periodic); for Open signals omega[n-1] = omega[n-2].
+// with t+1 taken modulo n (Periodic); for Open signals omega[n-1] = omega[n-2]. It is computed
+// as the phase step theta[t+1] - theta[t] wrapped into (-pi, pi], the same number without a
+// second atan2 per sample.
 // Near-zero amplitude rule: where a[t] < 1e-3 * RMS(a) of that IMF, or where omega[t] < 0, the
 // phase is meaningless and omega[t] is set to the IMF's amplitude-weighted mean frequency
 // over the remaining samples (0 if none remain); every omega lies in [0, 0.5].
@@ -49,13 +53,16 @@ class HilbertTransformer {
 
  private:
   struct Plans;
+  // Runs both transforms; the result, n H[x], lives in the transformer's buffer.
+  const double* hilbert_transform_times_n(const std::vector<double>& x);
   std::unique_ptr<Plans> plans_;
-  std::vector<std::complex<double>> z_;
 };
 
-// Spectra of all IMFs, with one transformer (IMFs of unequal lengths: std::invalid_argument).
+// Spectra of all IMFs (IMFs of unequal lengths: std::invalid_argument). Up to `threads` threads
+// (at most one per IMF) each make one transformer and take every threads-th IMF; the result does
+// not depend on the number of threads.
 std::vector<HilbertSpectrum> hilbert_spectra(const std::vector<std::vector<double>>& imfs,
-                                             SignalBoundary boundary);
+                                             SignalBoundary boundary, int threads = 2);
 
 // Amplitude-weighted mean instantaneous frequency, sum a omega / sum a (0 for a zero IMF).
 double mean_frequency(const HilbertSpectrum& spectrum);

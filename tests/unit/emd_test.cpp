@@ -241,6 +241,23 @@ TEST(Emd, RotatingACyclicSignalRotatesItsImfs) {
   for (int t = 0; t < n; ++t) ASSERT_NEAR(b.residue[(t + shift) % n], a.residue[t], 1e-9 * scale);
 }
 
+TEST(Emd, TwoThreadsGiveTheSameResultAsOne) {
+  const std::vector<double> signal = rich_signal(100000, 17);  // long enough for two threads
+  for (SignalBoundary b : {SignalBoundary::Periodic, SignalBoundary::Open}) {
+    EmdOptions o;
+    o.boundary = b;
+    o.threads = 1;
+    const EmdResult serial = hht::emd(signal, o);
+    o.threads = 2;
+    const EmdResult parallel = hht::emd(signal, o);
+    ASSERT_GE(serial.imfs.size(), 5u);
+    EXPECT_EQ(parallel.imfs, serial.imfs);
+    EXPECT_EQ(parallel.residue, serial.residue);
+    EXPECT_EQ(parallel.sifts, serial.sifts);
+    EXPECT_LT(reconstruction_error(parallel, signal), 1e-12 * max_abs(signal));
+  }
+}
+
 TEST(Emd, OpenBoundarySeparatesASineFromATrend) {
   const int n = 3000;
   std::vector<double> trend(n), sine(n), signal(n);

@@ -160,11 +160,20 @@ TEST(HilbertSpectrum, PlansAreCreatedOnceAndReused) {
   EXPECT_EQ(first.amplitude, again.amplitude);
   EXPECT_EQ(first.frequency, again.frequency);
 
+  // One transformer (two plans) per thread, whatever the number of IMFs; same result.
   const long before_all = HilbertTransformer::plans_created();
-  const std::vector<HilbertSpectrum> all = hht::hilbert_spectra({a, b, a, b}, SignalBoundary::Periodic);
+  const std::vector<HilbertSpectrum> serial = hht::hilbert_spectra({a, b, a, b, a}, SignalBoundary::Periodic, 1);
   EXPECT_EQ(HilbertTransformer::plans_created() - before_all, 2);
-  ASSERT_EQ(all.size(), 4u);
-  EXPECT_EQ(all[2].frequency, first.frequency);
+  const std::vector<HilbertSpectrum> parallel = hht::hilbert_spectra({a, b, a, b, a}, SignalBoundary::Periodic, 2);
+  EXPECT_EQ(HilbertTransformer::plans_created() - before_all, 2 + 4);
+  ASSERT_EQ(serial.size(), 5u);
+  ASSERT_EQ(parallel.size(), 5u);
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_EQ(serial[i].frequency, (i % 2 ? h.spectrum(b, SignalBoundary::Periodic) : first).frequency);
+    EXPECT_EQ(parallel[i].amplitude, serial[i].amplitude);
+    EXPECT_EQ(parallel[i].phase, serial[i].phase);
+    EXPECT_EQ(parallel[i].frequency, serial[i].frequency);
+  }
   EXPECT_THROW(h.spectrum(std::vector<double>(n + 1, 0.0), SignalBoundary::Periodic), std::invalid_argument);
   EXPECT_THROW(hht::hilbert_spectra({a, std::vector<double>(10, 0.0)}, SignalBoundary::Periodic),
                std::invalid_argument);
