@@ -8,18 +8,19 @@
 //   - Periodic signals (a Hamiltonian cycle): extrema are found cyclically (the last sample is
 //     compared with the first) and the envelopes are periodic splines, so there are no ends.
 //   - Open signals (a path): the ends are not extrema; 2 extrema of each kind are mirrored
-//     beyond each end (as Rilling's emd.m and PyEMD's nbsym = 2 do), about the outermost
-//     extremum, or about the end sample when the signal there lies beyond the first extremum of
-//     the other kind (the end sample then becomes a knot too), or when mirroring about the
-//     extremum would not reach past the end; the envelopes are not-a-knot splines.
+//     beyond each end (as Rilling's emd.m and PyEMD's nbsym = 2 do), about the extremum
+//     nearest to the end, or about the end sample when the signal there lies beyond the first
+//     extremum of the other kind (the end sample then becomes a knot too) or when mirroring
+//     about the extremum would not reach past the end; the envelopes are not-a-knot splines.
 //   - A flat run of equal samples counts as one extremum, at its middle (the left one of the
 //     two middle samples for an even length).
 //
-// Stopping the sifting of one IMF, after the sift i that makes the first of these true:
-//   - SD = sum_t (s_{i-1}(t) - s_i(t))^2 / sum_t s_{i-1}(t)^2 < sd_threshold (the ratio-of-sums
-//     form of Huang's SD: the pointwise form divides by near-zero samples), or
-//   - i == max_sifts, or
-//   - s_i has no maximum or no minimum left, so that no further envelope exists.
+// Stopping the sifting of one IMF (the IMF is the last s_i):
+//   - after the first sift i with SD = sum_t (s_{i-1}(t) - s_i(t))^2 / sum_t s_{i-1}(t)^2
+//     below sd_threshold (the ratio-of-sums form of Huang's SD: the pointwise form divides by
+//     near-zero samples and grows with the length), or
+//   - after max_sifts sifts, or
+//   - before a sift, when s_i has no maximum or no minimum left, so that no envelope exists.
 // Stopping the decomposition, checked on the residue before each new IMF:
 //   - the residue has fewer than min_extrema maxima or fewer than min_extrema minima (the
 //     paper's rule, 15), or

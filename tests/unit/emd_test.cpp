@@ -295,6 +295,30 @@ TEST(Emd, OpenBoundaryFollowsAChirp) {
   EXPECT_LT(reconstruction_error(r, signal), 1e-12 * max_abs(signal));
 }
 
+TEST(Emd, OpenBoundaryWithALongRampBeforeTheFirstExtremum) {
+  // The first maximum lies at 100, its neighbours 5 to 20 samples further: mirrored about it
+  // they would stay inside the ramp and the end pieces would extrapolate over ~80 samples
+  // (IMFs up to 26 here, measured); mirroring about the end sample keeps them within the
+  // signal's range (0.94 measured, the signal reaching 2.3).
+  const int n = 1000;
+  std::vector<double> signal(n);
+  for (int t = 0; t < n; ++t) {
+    const double u = t - 100.0;
+    signal[t] = t <= 100 ? t / 100.0
+                         : (1.0 + 0.8 * std::sin(2.0 * kPi * u / 150.0)) * std::cos(2.0 * kPi * u / 10.0) +
+                               0.5 * std::sin(2.0 * kPi * u / 200.0);
+  }
+  EmdOptions o;
+  o.boundary = SignalBoundary::Open;
+  o.min_extrema = 5;
+  const EmdResult r = hht::emd(signal, o);
+  ASSERT_GE(r.imfs.size(), 1u);
+  for (const auto& imf : r.imfs) {
+    for (int t = 0; t <= 100; ++t) ASSERT_LT(std::abs(imf[t]), max_abs(signal)) << t;
+  }
+  EXPECT_LT(reconstruction_error(r, signal), 1e-12 * max_abs(signal));
+}
+
 TEST(Emd, FlaggedSamplesNeverShapeTheEnvelopes) {
   // A tone with a spike on one of its peaks. When the peak is flagged, the spike's height
   // cannot reach the envelopes: changing it changes the IMF at that sample only.
