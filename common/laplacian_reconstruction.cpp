@@ -1,6 +1,7 @@
 #include "laplacian_reconstruction.h"
 
 #include "cotangent_laplacian.h"
+#include "gaussian_noise.h"
 
 #include <Eigen/CholmodSupport>
 
@@ -14,13 +15,6 @@ using Sparse = Eigen::SparseMatrix<double>;
 using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
-double mean_edge_length(const Positions& p, const Faces& f) {
-  double sum = 0;
-  for (Eigen::Index i = 0; i < f.rows(); ++i)
-    for (int k = 0; k < 3; ++k) sum += (p.row(f(i, k)) - p.row(f(i, (k + 1) % 3))).norm();
-  return f.rows() > 0 ? sum / (3.0 * f.rows()) : 0.0;
-}
 
 }  // namespace
 

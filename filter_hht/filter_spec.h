@@ -33,5 +33,8 @@ struct FilterSpec {
 // One per filter, each in its own file.
 FilterSpec hamiltonian_cycle_filter();
 FilterSpec curvature_signal_filter();
+FilterSpec hilbert_spectra_filter();
+FilterSpec spectral_filter_filter();
+FilterSpec add_noise_filter();
 
 }  // namespace hht_plugin

@@ -1,0 +1,57 @@
+// "HHT: Add Gaussian Noise": the paper's noise model, for making test inputs.
+#include "filter_spec.h"
+#include "mesh_adapter.h"
+
+#include "gaussian_noise.h"
+
+namespace hht_plugin {
+
+namespace {
+
+void declare(MeshDocument&, RichParameterList& p) {
+  p.addParam(RichFloat("sigmaPercent", 10.0f, "Sigma (% of mean edge length)",
+                       "Standard deviation of the displacement, in percent of the mesh's mean edge length (the paper "
+                       "uses 5% for Fandisk, 10% for the cube and the torus)."));
+  p.addParam(RichEnum("direction", 0, QStringList{"Random direction", "Along the vertex normal"}, "Direction",
+                      "Each vertex moves along a uniformly random direction, or along its area-weighted normal."));
+  p.addParam(RichInt("seed", 1, "Random seed", "The same seed gives the same noise."));
+}
+
+bool apply(FilterRun& run) {
+  MeshModel& model = *run.document.mm();
+  hht::Positions positions;
+  hht::Faces faces;
+  if (!read_triangle_mesh(model.cm, positions, faces, run.error)) return false;
+  const double percent = run.parameters.getFloat("sigmaPercent");
+  if (!(percent >= 0) || !std::isfinite(percent)) {
+    run.error = "Nothing was changed: sigma must be a finite percentage >= 0.";
+    return false;
+  }
+  const auto direction = run.parameters.getEnum("direction") == 1 ? hht::NoiseDirection::Normal : hht::NoiseDirection::Random;
+  const hht::Positions noisy = hht::add_gaussian_noise(positions, faces, percent, direction,
+                                                       static_cast<unsigned>(run.parameters.getInt("seed")));
+  hht::set_vertex_positions(model.cm, noisy);
+  model.UpdateBoxAndNormals();
+  const double edge = hht::mean_edge_length(positions, faces);
+  const double rms = std::sqrt((noisy - positions).rowwise().squaredNorm().mean());
+  run.log(QString("Gaussian noise: sigma %1% of the mean edge length %2 = %3, %4; measured RMS displacement %5")
+              .arg(percent).arg(edge).arg(percent / 100.0 * edge)
+              .arg(direction == hht::NoiseDirection::Normal ? "along the normals" : "random directions").arg(rms));
+  return true;
+}
+
+}  // namespace
+
+FilterSpec add_noise_filter() {
+  return {"HHT: Add Gaussian Noise",
+          "Adds the noise model of the paper's experiments: every vertex moves by a Gaussian amount with standard "
+          "deviation sigma, given in percent of the mean edge length, along a uniformly random direction or along its "
+          "normal. The seed makes it reproducible.",
+          MeshFilterInterface::Smoothing,
+          MeshFilterInterface::SINGLE_MESH,
+          MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL,
+          declare,
+          apply};
+}
+
+}  // namespace hht_plugin

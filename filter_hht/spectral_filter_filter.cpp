@@ -1,0 +1,152 @@
+// "HHT: Spectral Filter": smooths or enhances the geometry by filtering the curvature signal's
+// IMFs on their instantaneous frequency and rebuilding the mesh (the paper's sec. 4.2).
+#include "filter_spec.h"
+#include "hht_parameters.h"
+#include "mesh_adapter.h"
+
+#include "spectral_mesh_filter.h"
+
+namespace hht_plugin {
+
+namespace {
+
+enum Band { HighFrequencies, LowFrequencies, InsideBand, OutsideBand };
+
+void declare(MeshDocument&, RichParameterList& p) {
+  p.addParam(RichEnum("band", HighFrequencies,
+                      QStringList{"High frequencies (above cut-off)", "Low frequencies (below cut-off)",
+                                  "Inside [low, high]", "Outside [low, high]"},
+                      "Band the gain acts on",
+                      "Which instantaneous frequencies get multiplied by the gain; the others are kept. With gain 0: "
+                      "'High frequencies' is a low-pass filter (smoothing), 'Low frequencies' a high-pass, 'Inside' "
+                      "a band-stop, 'Outside' a band-pass. With gain above 1 the band is enhanced."));
+  p.addParam(RichFloat("cutoff", 0.1f, "Cut-off frequency",
+                       "For the high / low bands: instantaneous frequency, in cycles per sample along the cycle "
+                       "(0 to 0.5), where the band starts."));
+  p.addParam(RichFloat("lowFrequency", 0.05f, "Band low edge", "For inside / outside: the band's lower frequency."));
+  p.addParam(RichFloat("highFrequency", 0.15f, "Band high edge", "For inside / outside: the band's upper frequency."));
+  p.addParam(RichFloat("gain", 0.0f, "Gain",
+                       "Multiplies the selected band (the paper's phi): 0 removes it, 1 leaves the mesh as it is, "
+                       "above 1 enhances it, between 0 and 1 attenuates it."));
+  p.addParam(RichBool("coarseToFine", false, "Keep only the coarsest IMFs instead",
+                      "Ignore the band and gain: keep the residue plus the coarsest IMFs (the paper's Fig. 5 "
+                      "series, from smooth to the original)."));
+  p.addParam(RichInt("coarsestImfs", 0, "Coarsest IMFs kept",
+                     "With 'Keep only the coarsest IMFs': how many IMFs above the residue to keep (0 = residue only)."));
+  declare_cycle_and_emd_parameters(p);
+  p.addParam(RichInt("cycles", 1, "Cycles averaged",
+                     "Filter along this many Hamiltonian cycles (different seeds) and average the filtered signals. "
+                     "1 is the paper's method; more cycles remove the stripes that filtering along one cycle leaves "
+                     "(spatial neighbours far apart on the cycle are filtered independently), at the cost of one EMD "
+                     "per cycle."));
+  p.addParam(RichFloat("lambda", 0.01f, "Position weight (lambda)",
+                       "Weight of the original positions in the reconstruction (eq. 9), relative to the mean edge "
+                       "length, so a scaled copy of the mesh gives the scaled result. Larger: closer to the input."));
+  p.addParam(RichBool("literalTarget", false, "Paper's literal target (normal only)",
+                      "Rebuild with the target Laplacian G~ n of eq. 9 as written. It moves vertices tangentially "
+                      "even at gain 1; the default keeps the tangential part of L V and changes only its normal "
+                      "component, so gain 1 returns the mesh exactly."));
+}
+
+bool apply(FilterRun& run) {
+  MeshModel& model = *run.document.mm();
+  hht::Positions positions, result;
+  hht::Faces faces;
+  if (!read_triangle_mesh(model.cm, positions, faces, run.error)) return false;
+  const RichParameterList& par = run.parameters;
+
+  hht::SpectralMeshFilterOptions options;
+  options.cycle = cycle_options(par);
+  options.cycles = std::max(1, par.getInt("cycles"));
+  options.emd = emd_options(par);
+  options.gain = par.getFloat("gain");
+  options.keep_coarsest = par.getBool("coarseToFine");
+  options.coarsest = std::max(0, par.getInt("coarsestImfs"));
+  const int band = std::clamp(par.getEnum("band"), 0, 3);
+  const double cutoff = par.getFloat("cutoff");
+  const double low = par.getFloat("lowFrequency"), high = par.getFloat("highFrequency");
+  if (band <= LowFrequencies && !(cutoff >= 0 && cutoff <= 0.5)) {
+    run.error = "Nothing was changed: the cut-off frequency must lie in [0, 0.5] cycles per sample.";
+    return false;
+  }
+  if (band >= InsideBand && !(low >= 0 && low <= high && high <= 0.5)) {
+    run.error = "Nothing was changed: the band needs 0 <= low <= high <= 0.5 cycles per sample.";
+    return false;
+  }
+  if (!(options.gain >= 0) || !std::isfinite(options.gain)) {
+    run.error = "Nothing was changed: the gain must be a finite number >= 0.";
+    return false;
+  }
+  switch (band) {
+    case HighFrequencies: options.band = {cutoff, 0.5, false}; break;
+    case LowFrequencies: options.band = {0.0, cutoff, false}; break;
+    case InsideBand: options.band = {low, high, false}; break;
+    default: options.band = {low, high, true}; break;
+  }
+  options.reconstruction.lambda = par.getFloat("lambda");
+  if (!(options.reconstruction.lambda > 0)) {
+    run.error = "Nothing was changed: lambda must be positive.";
+    return false;
+  }
+  options.reconstruction.target =
+      par.getBool("literalTarget") ? hht::ReconstructionTarget::NormalOnly : hht::ReconstructionTarget::KeepTangential;
+
+  hht::SpectralMeshFilterReport report;
+  std::string message;
+  auto progress = [&](int percent, const char* stage) { run.report(percent, stage); };
+  if (!hht::spectral_mesh_filter(positions, faces, options, result, report, message, progress)) {
+    run.error = QString::fromStdString("Nothing was changed: " + message + ".");
+    return false;
+  }
+  hht::set_vertex_positions(model.cm, result);
+  model.UpdateBoxAndNormals();
+
+  const double diagonal = (positions.colwise().maxCoeff() - positions.colwise().minCoeff()).norm();
+  if (options.keep_coarsest)
+    run.log(QString("Spectral filter: residue + %1 coarsest IMFs kept").arg(options.coarsest));
+  else
+    run.log(QString("Spectral filter: gain %1 on instantaneous frequencies %2 [%3, %4] cycles/sample, %5 cycle(s) averaged")
+                .arg(options.gain).arg(options.band.outside ? "outside" : "in")
+                .arg(options.band.low).arg(options.band.high).arg(options.cycles));
+  run.log(QString("  cycle: %1 of %2 vertices (%3 isolated, their change interpolated from the one-ring), %4 segment(s)")
+              .arg(report.cycle.order.size()).arg(positions.rows()).arg(report.cycle.isolated).arg(report.cycle.components));
+  run.log(QString("  %1 IMFs (mean frequency, energy share):").arg(report.imfs.size()));
+  for (size_t k = 0; k < report.imfs.size(); ++k)
+    run.log(QString("    IMF %1: %2 sifts, frequency %3, energy %4%")
+                .arg(k + 1).arg(report.imfs[k].sifts).arg(report.imfs[k].mean_frequency, 0, 'f', 4)
+                .arg(100.0 * report.imfs[k].energy_share, 0, 'f', 2));
+  run.log(QString("  RMS change of the curvature signal %1; reconstruction: lambda %2, %3 target, %4 CG iterations, "
+                  "relative residual %5")
+              .arg(report.signal_change_rms).arg(options.reconstruction.lambda)
+              .arg(par.getBool("literalTarget") ? "literal (normal only)" : "keep-tangential")
+              .arg(report.reconstruction.iterations).arg(report.reconstruction.relative_residual, 0, 'g', 3));
+  run.log(QString("  largest vertex move %1 (%2% of the bounding-box diagonal)")
+              .arg(report.max_displacement).arg(100.0 * report.max_displacement / diagonal, 0, 'f', 4));
+  QString times = "  times (s):";
+  double total = 0;
+  for (const auto& s : report.stages) {
+    times += QString(" %1 %2,").arg(s.stage).arg(s.seconds, 0, 'f', 3);
+    total += s.seconds;
+  }
+  run.log(times + QString(" total %1").arg(total, 0, 'f', 3));
+  return true;
+}
+
+}  // namespace
+
+FilterSpec spectral_filter_filter() {
+  return {"HHT: Spectral Filter",
+          "Smooths or enhances the mesh geometry with the Hilbert-Huang transform (the paper's sec. 4.2, Figs. 1, 5-7): "
+          "the curvature signal G along a Hamiltonian cycle is decomposed by EMD; each IMF's instantaneous frequency "
+          "selects where the gain applies (G~ = sum phi(omega_i) IMF_i + residue, eq. 14); the mesh is rebuilt from "
+          "G~ by the Laplacian least-squares solve of eq. 9-11.<br>"
+          "Gain 0 on high frequencies smooths, gain above 1 enhances detail, gain 1 returns the mesh unchanged. The "
+          "connectivity is never changed.",
+          MeshFilterInterface::Smoothing,
+          MeshFilterInterface::SINGLE_MESH,
+          MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL,
+          declare,
+          apply};
+}
+
+}  // namespace hht_plugin
