@@ -4,7 +4,7 @@
 // Signal: a random walk (fixed seed) plus three tones, so that many scales are present.
 // Prints, per length and boundary: EMD time with 1 and 2 threads, IMF count, sifts per IMF, time
 // of the Hilbert spectra of all IMFs with 1 and 2 threads, and the peak resident memory (VmHWM)
-// reached so far in the process.
+// reached so far in the process; then the EMD time with 10 fixed sifts per IMF.
 
 #include <chrono>
 #include <cmath>
@@ -80,6 +80,12 @@ void run(int n, hht::SignalBoundary boundary) {
               n, boundary == hht::SignalBoundary::Periodic ? "periodic" : "open", emd_s[0],
               emd_s[1], result.imfs.size(), total_sifts, per_imf.c_str(), hilbert_s[0],
               hilbert_s[1], peak_rss_mb());
+  // Comparable with libeemd's figure for 10 fixed sifts per IMF (2.0 s for 1e6 samples).
+  options.sd_threshold = 0.0;
+  options.max_sifts = 10;
+  const double fixed_s = seconds([&] { result = hht::emd(signal, options); });
+  std::printf("  with 10 fixed sifts per IMF: EMD %.3f s (2 threads), %zu IMFs\n", fixed_s,
+              result.imfs.size());
   std::fflush(stdout);
 }
 
