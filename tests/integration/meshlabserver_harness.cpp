@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <regex>
 #include <sstream>
 
 namespace hht::test {
@@ -48,6 +50,60 @@ std::string write_script(const std::string& tag, const std::string& body) {
   const std::string path = output_path(tag + ".mlx");
   std::ofstream(path) << "<!DOCTYPE FilterScript>\n<FilterScript>\n" << body << "</FilterScript>\n";
   return path;
+}
+
+std::string chain_scripts(const std::string& tag, const std::vector<std::string>& resources,
+                          const std::vector<std::pair<std::string, std::string>>& overrides) {
+  std::string body;
+  for (const auto& name : resources) {
+    std::ifstream in(resource(name));
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string xml = text.str();
+    const size_t begin = xml.find("<filter"), end = xml.rfind("</filter>");
+    body += xml.substr(begin, end + 9 - begin) + "\n";
+  }
+  for (const auto& [name, value] : overrides) {
+    const std::regex param("(name=\"" + name + "\" value=\")[^\"]*\"");
+    body = std::regex_replace(body, param, "$01" + value + "\"");  // $01: value may start with a digit
+  }
+  return write_script(tag, body);
+}
+
+double mean_dihedral_angle(const TriMesh& m) {
+  Positions p;
+  Faces f;
+  mesh_to_arrays(m, p, f);
+  std::map<std::pair<int, int>, Eigen::RowVector3d> first;
+  double sum = 0;
+  int count = 0;
+  for (Eigen::Index i = 0; i < f.rows(); ++i) {
+    const Eigen::RowVector3d a = p.row(f(i, 0));
+    const Eigen::RowVector3d n = (p.row(f(i, 1)) - a).cross(p.row(f(i, 2)) - a).normalized();
+    for (int k = 0; k < 3; ++k) {
+      const std::pair<int, int> e{std::min(f(i, k), f(i, (k + 1) % 3)), std::max(f(i, k), f(i, (k + 1) % 3))};
+      auto it = first.find(e);
+      if (it == first.end()) {
+        first.emplace(e, n);
+      } else {
+        sum += std::acos(std::clamp(n.dot(it->second), -1.0, 1.0));
+        ++count;
+      }
+    }
+  }
+  return count ? sum / count : 0.0;
+}
+
+double max_distance(const TriMesh& a, const TriMesh& b) {
+  double d = 0;
+  for (size_t i = 0; i < a.vert.size() && i < b.vert.size(); ++i) d = std::max(d, double((a.vert[i].cP() - b.vert[i].cP()).Norm()));
+  return d;
+}
+
+double bbox_diagonal(const TriMesh& m) {
+  vcg::Box3d box;
+  for (const auto& v : m.vert) box.Add(v.cP());
+  return box.Diag();
 }
 
 }  // namespace hht::test

@@ -5,6 +5,8 @@
 #include "tri_mesh.h"
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace hht::test {
 
@@ -26,5 +28,14 @@ std::string output_path(const std::string& file);
 bool load_ply(const std::string& path, TriMesh& m, bool& has_quality);
 
 std::string write_script(const std::string& tag, const std::string& body);  // a one-off .mlx
+
+// The <filter> elements of shipped scripts, in order, with `overrides` (name -> value) applied
+// to their parameters: a script that stays in step with resources/.
+std::string chain_scripts(const std::string& tag, const std::vector<std::string>& resources,
+                          const std::vector<std::pair<std::string, std::string>>& overrides = {});
+
+double mean_dihedral_angle(const TriMesh& m);  // radians, over edges shared by two faces
+double max_distance(const TriMesh& a, const TriMesh& b);  // same vertex order
+double bbox_diagonal(const TriMesh& m);
 
 }  // namespace hht::test

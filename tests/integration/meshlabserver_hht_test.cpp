@@ -1,0 +1,114 @@
+// The HHT core filters (Hilbert Spectra, Spectral Filter, Add Gaussian Noise) through meshlabserver.
+#include "meshlabserver_harness.h"
+
+#include <gtest/gtest.h>
+#include <wrap/io_trimesh/import_off.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace hht::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+void load(const ServerRun& run, TriMesh& m) {
+  bool has_quality = false;
+  ASSERT_EQ(run.exit_code, 0) << run.log;
+  ASSERT_TRUE(load_ply(run.output, m, has_quality)) << run.output;
+}
+
+void load_input(const std::string& name, TriMesh& m) {
+  ASSERT_EQ(vcg::tri::io::ImporterOFF<TriMesh>::Open(m, data_mesh(name).c_str()), 0);
+}
+
+TEST(MeshlabserverHht, HilbertSpectraFrequencyAndDistribution) {
+  fs::remove(output_path("frequency_distribution.png"));
+  fs::remove(output_path("frequency_distribution.csv"));
+  const ServerRun run = run_meshlabserver(data_mesh("fandisk"), resource("hilbert_spectra.mlx"), "spectra_fandisk");
+  TriMesh m;
+  load(run, m);
+  for (const auto& v : m.vert) {  // the script writes the finest IMF's instantaneous frequency
+    ASSERT_GE(v.cQ(), 0.0);
+    ASSERT_LE(v.cQ(), 0.5);
+  }
+  EXPECT_NE(run.log.find("IMF 1:"), std::string::npos) << run.log;
+  EXPECT_GT(fs::file_size(output_path("frequency_distribution.png")), 1000u);
+  std::ifstream csv(output_path("frequency_distribution.csv"));
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_EQ(header.rfind("frequency_low,frequency_high,imf1,imf2", 0), 0u) << header;
+  int rows = 0;
+  for (std::string line; std::getline(csv, line);) ++rows;
+  EXPECT_EQ(rows, 50);
+}
+
+TEST(MeshlabserverHht, SpectraOfAQualityLeftByAnotherFilter) {
+  // the curvature filter writes G into quality; the spectra filter then analyses that quality
+  const std::string script = chain_scripts("spectra_of_quality", {"curvature_signal.mlx", "hilbert_spectra.mlx"},
+                                           {{"source", "1"}, {"output", "4"}, {"histogramFile", ""}});
+  TriMesh m;
+  load(run_meshlabserver(data_mesh("fandisk"), script, "spectra_of_quality"), m);
+  double spread = 0;
+  for (const auto& v : m.vert) spread = std::max(spread, std::abs(double(v.cQ())));
+  EXPECT_GT(spread, 0.0);  // the residue of G, not zeros
+}
+
+TEST(MeshlabserverHht, GainOneGivesTheMeshBackInTheSavedFile) {
+  const std::string script = chain_scripts("gain_one", {"smooth.mlx"}, {{"gain", "1"}});
+  TriMesh out, in;
+  load(run_meshlabserver(data_mesh("fandisk"), script, "gain_one"), out);
+  load_input("fandisk", in);
+  ASSERT_EQ(out.vn, in.vn);
+  EXPECT_LT(max_distance(out, in), 1e-5 * bbox_diagonal(in));
+}
+
+TEST(MeshlabserverHht, NoiseThenSmoothIsVisiblySmoother) {
+  TriMesh noisy, smoothed;
+  load(run_meshlabserver(data_mesh("armadillo"), chain_scripts("noise_only", {"add_noise.mlx"}), "noise_only"), noisy);
+  load(run_meshlabserver(data_mesh("armadillo"), chain_scripts("noise_smooth", {"add_noise.mlx", "smooth.mlx"}),
+                         "noise_smooth"), smoothed);
+  EXPECT_LT(mean_dihedral_angle(smoothed), 0.7 * mean_dihedral_angle(noisy));
+}
+
+TEST(MeshlabserverHht, EnhanceStrengthensDetail) {
+  TriMesh in, enhanced;
+  load_input("fandisk", in);
+  load(run_meshlabserver(data_mesh("fandisk"), resource("enhance.mlx"), "enhance_fandisk"), enhanced);
+  EXPECT_GT(mean_dihedral_angle(enhanced), 1.1 * mean_dihedral_angle(in));
+  EXPECT_LT(max_distance(enhanced, in), 0.05 * bbox_diagonal(in));  // detail, not a different shape
+}
+
+TEST(MeshlabserverHht, NoiseHasTheRequestedSigma) {
+  TriMesh in, noisy;
+  load_input("fandisk", in);
+  const ServerRun run = run_meshlabserver(data_mesh("fandisk"), chain_scripts("noise_sigma", {"add_noise.mlx"}), "noise_sigma");
+  load(run, noisy);
+  Positions p;
+  Faces f;
+  mesh_to_arrays(in, p, f);
+  double edge = 0, sq = 0;
+  for (Eigen::Index i = 0; i < f.rows(); ++i)
+    for (int k = 0; k < 3; ++k) edge += (p.row(f(i, k)) - p.row(f(i, (k + 1) % 3))).norm();
+  edge /= 3.0 * f.rows();
+  for (int v = 0; v < in.vn; ++v) sq += (noisy.vert[v].cP() - in.vert[v].cP()).SquaredNorm();
+  EXPECT_NEAR(std::sqrt(sq / in.vn) / edge, 0.10, 0.10 * 0.03);  // the script asks for 10%
+}
+
+
+TEST(MeshlabserverHht, BadInputLeavesNothingBehind) {
+  const std::string cloud = output_path("hht_bad_cloud.off");
+  std::ofstream(cloud) << "OFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  const std::string nan = output_path("hht_bad_nan.off");
+  std::ofstream(nan) << "OFF\n4 4 0\n0 0 0\n1 0 0\nnan 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
+  for (const char* script : {"hilbert_spectra.mlx", "smooth.mlx", "enhance.mlx", "add_noise.mlx"})
+    for (const auto& [input, message] : {std::pair{cloud, "no faces"}, std::pair{nan, "NaN"}}) {
+      const ServerRun run = run_meshlabserver(input, resource(script), "hht_bad");
+      EXPECT_NE(run.exit_code, 0) << script;
+      EXPECT_NE(run.log.find(message), std::string::npos) << script << "\n" << run.log;
+      EXPECT_FALSE(fs::exists(run.output)) << script;
+    }
+}
+
+}  // namespace
+}  // namespace hht::test
