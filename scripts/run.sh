@@ -14,13 +14,23 @@ echo "[run] installed $(ls /usr/lib/x86_64-linux-gnu/meshlab/plugins/libfilter_h
 
 mkdir -p "$OUT"
 name="$(basename "${MODEL%.*}")"
-run_script() {  # run_script <script> <output-name>
-  local log="$OUT/$2.log"
-  (cd "$OUT" && xvfb-run -a -s "-screen 0 800x600x24" meshlabserver -i "$MODEL" -o "$OUT/$2.ply" -m vq vc \
-      -s "$ROOT/resources/$1.mlx" >"$log" 2>&1) || { echo "[run] $1 failed, see $log" >&2; tail -5 "$log" >&2; exit 1; }
+# run_script <output-name> <script>...: the scripts' filters, in order, in one meshlabserver run
+run_script() {
+  local name="$1"; shift
+  local log="$OUT/$name.log" script="$OUT/.$name.mlx"
+  { echo '<!DOCTYPE FilterScript>'; echo '<FilterScript>'
+    for s in "$@"; do sed -n '/<filter /,/<\/filter>/p' "$ROOT/resources/$s.mlx"; done
+    echo '</FilterScript>'; } > "$script"
+  (cd "$OUT" && xvfb-run -a -s "-screen 0 800x600x24" meshlabserver -i "$MODEL" -o "$OUT/$name.ply" -m vq vc \
+      -s "$script" >"$log" 2>&1) || { echo "[run] $name failed, see $log" >&2; tail -5 "$log" >&2; exit 1; }
+  rm -f "$script"
   grep '^LOG:' "$log" | sed 's/^LOG: [0-9]* /    /'
-  echo "[run] $1 -> $OUT/$2.ply"
+  echo "[run] $* -> $OUT/$name.ply"
 }
-run_script hamiltonian_cycle "${name}_cycle"
-run_script curvature_signal "${name}_curvature"
-echo "[run] results in $OUT"
+run_script "${name}_cycle" hamiltonian_cycle
+run_script "${name}_curvature" curvature_signal
+run_script "${name}_spectra" hilbert_spectra
+run_script "${name}_noisy" add_noise
+run_script "${name}_noisy_smoothed" add_noise smooth
+run_script "${name}_enhanced" enhance
+echo "[run] results in $OUT (frequency_distribution.png/.csv: the IMFs' frequency distribution)"
