@@ -12,7 +12,7 @@ PACKAGES=(
   build-essential cmake pkg-config dpkg-dev xz-utils
   meshlab qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev
   libeigen3-dev libsuitesparse-dev libfftw3-dev libgtest-dev
-  xvfb xauth libgl1-mesa-dri libcgal-demo
+  xvfb xauth libgl1-mesa-dri libcgal-demo bc time
 )
 
 missing=()
