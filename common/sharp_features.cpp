@@ -258,17 +258,30 @@ void supported_creases(const Positions& p, const Topology& topo, std::vector<cha
 }
 
 // Where three creases meet at a vertex whose faces all touch two of them (a coarse corner),
-// the filter blends those faces and the creases stop one vertex short: a vertex whose
-// neighbours are all feature vertices is taken back as their junction.
-void fill_junctions(const Topology& topo, const std::vector<char>& on_boundary, std::vector<char>& feature) {
+// the filter blends those faces: the creases stop one vertex short and close a small loop of
+// crease edges around it (its one-ring's outer edges). Such a vertex is taken back as their
+// junction. (A vertex merely surrounded by feature vertices, as in a strip one triangle
+// wide between two creases, is not: its ring has edges across the strip.)
+void fill_junctions(const Topology& topo, const std::vector<char>& crease, const std::vector<char>& on_boundary,
+                    std::vector<char>& feature) {
+  auto is_crease = [&](int a, int b) {
+    for (int i = topo.vertex_edges.begin(a); i < topo.vertex_edges.end(a); ++i) {
+      const int e = topo.vertex_edges.items[i];
+      if (other_vertex(topo, e, a) == b) return crease[e] == 2;
+    }
+    return false;
+  };
   const int nv = static_cast<int>(feature.size());
   std::vector<int> junctions;
   for (int v = 0; v < nv; ++v) {
-    if (feature[v] || on_boundary[v] || topo.vertex_edges.end(v) == topo.vertex_edges.begin(v)) continue;
-    bool surrounded = true;
-    for (int i = topo.vertex_edges.begin(v); i < topo.vertex_edges.end(v) && surrounded; ++i)
-      surrounded = feature[other_vertex(topo, topo.vertex_edges.items[i], v)];
-    if (surrounded) junctions.push_back(v);
+    if (feature[v] || on_boundary[v] || topo.vertex_faces.end(v) == topo.vertex_faces.begin(v)) continue;
+    bool enclosed = true;
+    for (int i = topo.vertex_faces.begin(v); i < topo.vertex_faces.end(v) && enclosed; ++i) {
+      const int f = topo.vertex_faces.items[i];
+      const int k = topo.faces(f, 0) == v ? 0 : topo.faces(f, 1) == v ? 1 : 2;
+      enclosed = is_crease(topo.faces(f, (k + 1) % 3), topo.faces(f, (k + 2) % 3));
+    }
+    if (enclosed) junctions.push_back(v);
   }
   for (int v : junctions) feature[v] = 1;
 }
@@ -390,7 +403,7 @@ bool detect_sharp_features(const Positions& positions, const Faces& faces, const
     if (topo.edge_faces[e][1] < 0)
       for (int v : topo.edge_vertices[e]) on_boundary[v] = 1;
   }
-  fill_junctions(topo, on_boundary, feature);
+  fill_junctions(topo, crease, on_boundary, feature);
   thin(topo, saliency, on_boundary, feature);
   drop_small_groups(topo, on_boundary, options.min_feature_vertices, feature);
 
