@@ -414,4 +414,12 @@ bool detect_sharp_features(const Positions& positions, const Faces& faces, const
   return true;
 }
 
+bool guided_face_normals(const Positions& positions, const Faces& faces, int iterations, double sigma,
+                         Positions& normals, std::string& error) {
+  Topology topo;
+  if (!build_topology(faces, static_cast<int>(positions.rows()), topo, error)) return false;
+  normals = filter_normals(topo, face_geometry(positions, faces), iterations, sigma);
+  return true;
+}
+
 }  // namespace hht

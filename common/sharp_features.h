@@ -67,4 +67,10 @@ struct SharpFeatureOptions {
 bool detect_sharp_features(const Positions& positions, const Faces& faces, const SharpFeatureOptions& options,
                            std::vector<FeatureType>& type, std::string& error);
 
+// The face normals the detector votes with: guided normal filtering (see above), `iterations`
+// passes with range width `sigma`. Used on its own by the denoiser's refinement. Fails like
+// detect_sharp_features on broken input.
+bool guided_face_normals(const Positions& positions, const Faces& faces, int iterations, double sigma,
+                         Positions& normals, std::string& error);
+
 }  // namespace hht

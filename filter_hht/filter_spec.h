@@ -36,5 +36,8 @@ FilterSpec curvature_signal_filter();
 FilterSpec hilbert_spectra_filter();
 FilterSpec spectral_filter_filter();
 FilterSpec add_noise_filter();
+FilterSpec denoise_filter();
+FilterSpec compare_filter();
+FilterSpec bilateral_filter();
 
 }  // namespace hht_plugin

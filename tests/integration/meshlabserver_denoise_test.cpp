@@ -1,0 +1,116 @@
+// The denoising filters (issue 4) through meshlabserver.
+#include "meshlabserver_harness.h"
+
+#include "denoise_metrics.h"
+
+#include <gtest/gtest.h>
+#include <wrap/io_trimesh/import_off.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace hht::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+void load(const ServerRun& run, TriMesh& m) {
+  bool has_quality = false;
+  ASSERT_EQ(run.exit_code, 0) << run.log;
+  ASSERT_TRUE(load_ply(run.output, m, has_quality)) << run.output;
+}
+
+// Runs meshlabserver with two inputs: layer 0 the reference, layer 1 (current) the result.
+ServerRun compare(const std::string& reference, const std::string& result, const std::string& tag) {
+  ServerRun run;
+  run.output = output_path(tag + ".ply");
+  fs::remove(run.output);
+  const std::string log = output_path(tag + ".log");
+  const std::string command = "cd '" + std::string(HHT_OUTPUT_DIR) + "' && xvfb-run -a -s '-screen 0 800x600x24' '" +
+                              std::string(HHT_STAGE_DIR) + "/bin/meshlabserver' -i '" + reference + "' -i '" + result +
+                              "' -o '" + run.output + "' -m vq vc -s '" + resource("compare.mlx") + "' > '" + log + "' 2>&1";
+  const int status = std::system(command.c_str());
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream in(log);
+  run.log.assign(std::istreambuf_iterator<char>(in), {});
+  return run;
+}
+
+double logged(const std::string& log, const std::string& key) {
+  const size_t at = log.find(key + " = ");
+  return at == std::string::npos ? -1.0 : std::stod(log.substr(at + key.size() + 3));
+}
+
+TEST(MeshlabserverDenoise, CompareIdenticalMeshesGivesZero) {
+  const ServerRun run = compare(data_mesh("fandisk"), data_mesh("fandisk"), "compare_same");
+  ASSERT_EQ(run.exit_code, 0) << run.log;
+  EXPECT_EQ(logged(run.log, "E_a"), 0.0) << run.log;
+  EXPECT_EQ(logged(run.log, "E_v"), 0.0) << run.log;
+}
+
+TEST(MeshlabserverDenoise, NoisyCubeDenoisedThenCompared) {
+  TriMesh noisy, denoised;  // the same noise (same seed) in both runs
+  load(run_meshlabserver(data_mesh("cube-meshed"), chain_scripts("cube_noise", {"add_noise.mlx"}), "cube_noisy"), noisy);
+  load(run_meshlabserver(data_mesh("cube-meshed"), chain_scripts("cube_denoise", {"add_noise.mlx", "denoise.mlx"}),
+                         "cube_denoised"), denoised);
+  const ServerRun before = compare(data_mesh("cube-meshed"), output_path("cube_noisy.ply"), "compare_noisy");
+  const ServerRun after = compare(data_mesh("cube-meshed"), output_path("cube_denoised.ply"), "compare_denoised");
+  ASSERT_EQ(before.exit_code, 0) << before.log;
+  ASSERT_EQ(after.exit_code, 0) << after.log;
+  EXPECT_GT(logged(before.log, "E_a"), 0.0);
+  EXPECT_LT(logged(after.log, "E_a"), 0.7 * logged(before.log, "E_a"));
+  // the filter's numbers are the library's, on the saved files
+  TriMesh cube;
+  ASSERT_EQ(vcg::tri::io::ImporterOFF<TriMesh>::Open(cube, data_mesh("cube-meshed").c_str()), 0);
+  Positions truth, result;
+  Faces faces;
+  mesh_to_arrays(cube, truth, faces);
+  mesh_to_arrays(denoised, result, faces);
+  EXPECT_NEAR(logged(after.log, "E_a"), mean_face_normal_error_degrees(result, truth, faces), 1e-3);
+}
+
+TEST(MeshlabserverDenoise, CompareRefusesDifferentConnectivity) {
+  const ServerRun run = compare(data_mesh("fandisk"), data_mesh("cube-meshed"), "compare_mismatch");
+  EXPECT_NE(run.exit_code, 0);
+  EXPECT_NE(run.log.find("same connectivity"), std::string::npos) << run.log;
+  EXPECT_FALSE(fs::exists(run.output));
+}
+
+TEST(MeshlabserverDenoise, FeatureLinesLayer) {
+  const std::string script = chain_scripts("feature_layer", {"add_noise.mlx", "denoise.mlx"}, {{"showFeatures", "2"}});
+  std::ifstream in(script);
+  std::string body((std::istreambuf_iterator<char>(in)), {});
+  const size_t end = body.rfind("</FilterScript>");
+  body.insert(end, " <filter name=\"Change the current layer\">\n  <Param type=\"RichMesh\" name=\"layer\" value=\"1\"/>\n </filter>\n");
+  std::ofstream(script) << body;
+  TriMesh lines;
+  load(run_meshlabserver(data_mesh("cube-meshed"), script, "feature_layer"), lines);
+  EXPECT_EQ(lines.fn, 0);
+  EXPECT_GT(lines.vn, 12 * 5);  // 12 cube edges, several vertices each
+  EXPECT_NE(run_meshlabserver(data_mesh("cube-meshed"), script, "feature_layer").log.find("12 feature lines"), std::string::npos);
+}
+
+TEST(MeshlabserverDenoise, BilateralSmoothsANoisyTorusLikeModel) {
+  TriMesh noisy, smoothed;
+  load(run_meshlabserver(data_mesh("armadillo"), chain_scripts("bil_noise", {"add_noise.mlx"}), "bil_noisy"), noisy);
+  load(run_meshlabserver(data_mesh("armadillo"), chain_scripts("bil", {"add_noise.mlx", "bilateral.mlx"}), "bil_smoothed"),
+       smoothed);
+  EXPECT_LT(mean_dihedral_angle(smoothed), 0.8 * mean_dihedral_angle(noisy));
+}
+
+TEST(MeshlabserverDenoise, BadInputLeavesNothingBehind) {
+  const std::string cloud = output_path("denoise_bad_cloud.off");
+  std::ofstream(cloud) << "OFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  const std::string nan = output_path("denoise_bad_nan.off");
+  std::ofstream(nan) << "OFF\n4 4 0\n0 0 0\n1 0 0\nnan 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
+  for (const char* script : {"denoise.mlx", "bilateral.mlx", "compare.mlx"})
+    for (const auto& [input, message] : {std::pair{cloud, "no faces"}, std::pair{nan, "NaN"}}) {
+      const ServerRun run = run_meshlabserver(input, resource(script), "denoise_bad");
+      EXPECT_NE(run.exit_code, 0) << script;
+      EXPECT_NE(run.log.find(message), std::string::npos) << script << "\n" << run.log;
+      EXPECT_FALSE(fs::exists(run.output)) << script;
+    }
+}
+
+}  // namespace
+}  // namespace hht::test

@@ -1,0 +1,83 @@
+#include "denoise_metrics.h"
+#include "feature_preserving_denoise.h"
+#include "gaussian_noise.h"
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+
+namespace hht {
+namespace {
+
+Positions denoise(const Positions& p, const Faces& f, const DenoiseOptions& o, DenoiseReport* out = nullptr) {
+  Positions result;
+  DenoiseReport report;
+  std::string error;
+  EXPECT_TRUE(feature_preserving_denoise(p, f, o, result, report, error)) << error;
+  if (out) *out = report;
+  return result;
+}
+
+TEST(FeaturePreservingDenoise, NoisyCubeGetsCloserToTheCube) {
+  const test::ArrayMesh cube = test::load_data_mesh("cube-meshed");
+  const Positions noisy = add_gaussian_noise(cube.positions, cube.faces, 10.0, NoiseDirection::Random, 12);
+  DenoiseReport report;
+  const Positions result = denoise(noisy, cube.faces, {}, &report);
+  const double before = mean_face_normal_error_degrees(noisy, cube.positions, cube.faces);
+  const double after = mean_face_normal_error_degrees(result, cube.positions, cube.faces);
+  EXPECT_LT(after, 0.7 * before) << "E_a " << before << " -> " << after;
+  EXPECT_LT(mean_distance_to_reference(result, cube.positions, cube.faces),
+            mean_distance_to_reference(noisy, cube.positions, cube.faces));
+  EXPECT_GE(report.lines, 12);
+  EXPECT_GE(report.corners, 8);
+  EXPECT_GT(report.feature_vertices, 0);
+}
+
+TEST(FeaturePreservingDenoise, WithoutFeaturesOnASmoothTorus) {
+  const test::ArrayMesh torus = test::torus(3.0, 1.0, 96, 48);
+  const Positions noisy = add_gaussian_noise(torus.positions, torus.faces, 10.0, NoiseDirection::Random, 13);
+  DenoiseOptions o;
+  o.detect_features = false;
+  DenoiseReport report;
+  const Positions result = denoise(noisy, torus.faces, o, &report);
+  EXPECT_EQ(report.feature_vertices, 0);
+  EXPECT_LT(mean_face_normal_error_degrees(result, torus.positions, torus.faces),
+            0.7 * mean_face_normal_error_degrees(noisy, torus.positions, torus.faces));
+}
+
+TEST(FeaturePreservingDenoise, FeatureVerticesAreTheDetectedOnes) {
+  const test::ArrayMesh fandisk = test::load_data_mesh("fandisk");
+  DenoiseReport report;
+  denoise(fandisk.positions, fandisk.faces, {}, &report);
+  int counted = 0;
+  for (FeatureType t : report.type) counted += t != FeatureType::None;
+  EXPECT_EQ(counted, report.feature_vertices);
+  EXPECT_EQ(static_cast<int>(report.feature_lines.lines.size()), report.lines);
+  EXPECT_GT(report.lines, 10);
+}
+
+TEST(FeaturePreservingDenoise, BadInput) {
+  test::ArrayMesh m = test::sphere(2);
+  Positions r;
+  DenoiseReport report;
+  std::string error;
+  EXPECT_FALSE(feature_preserving_denoise(m.positions, Faces(0, 3), {}, r, report, error));
+  EXPECT_NE(error.find("no faces"), std::string::npos);
+  m.positions(1, 2) = std::nan("");
+  EXPECT_FALSE(feature_preserving_denoise(m.positions, m.faces, {}, r, report, error));
+  EXPECT_NE(error.find("NaN"), std::string::npos);
+}
+
+TEST(FeaturePreservingDenoise, CadModelWithHoles) {
+  // Fandisk-like CAD models often have holes: cut some into fandisk itself.
+  const test::ArrayMesh m = test::remove_faces(test::load_data_mesh("fandisk"), 401);
+  const Positions noisy = add_gaussian_noise(m.positions, m.faces, 5.0, NoiseDirection::Random, 3);
+  DenoiseReport report;
+  const Positions result = denoise(noisy, m.faces, {}, &report);
+  EXPECT_GT(report.cycle.holes, 10);
+  EXPECT_LT(mean_face_normal_error_degrees(result, m.positions, m.faces),
+            0.7 * mean_face_normal_error_degrees(noisy, m.positions, m.faces));
+  EXPECT_LT(mean_distance_to_reference(result, m.positions, m.faces), mean_distance_to_reference(noisy, m.positions, m.faces));
+}
+
+}  // namespace
+}  // namespace hht
