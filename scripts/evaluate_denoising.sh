@@ -4,6 +4,7 @@
 # 10% (Fig. 8) and Fandisk at 30% (the usual level of the denoising literature); Gaussian noise
 # in random directions, sigma in percent of the mean edge length, fixed seeds.
 # Prints a Markdown table (E_a, E_v, time per method) and writes pictures into docs/images/.
+# Time: the whole meshlabserver run of the method (start-up, load, filter, save), wall clock.
 #   scripts/evaluate_denoising.sh [work-dir]
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -40,8 +41,8 @@ HC='<filter name="HC Laplacian Smooth"></filter>'
 measure() {  # measure <truth> <mesh>: prints "E_a E_v"
   server -i "$1" -i "$2" -o compare_out.ply -s "$ROOT/resources/compare.mlx"
   local ea ev
-  ea=$(grep -o 'E_a = [0-9.e+-]*' "$WORK/last.log" | awk '{print $3}')
-  ev=$(grep -o 'E_v = [0-9.e+-]*' "$WORK/last.log" | awk '{print $3}')
+  ea=$(grep -m1 -o 'E_a = [0-9.e+-]*' "$WORK/last.log" | awk '{print $3}')
+  ev=$(grep -m1 -o 'E_v = [0-9.e+-]*' "$WORK/last.log" | awk '{print $3}')
   echo "$ea $ev"
 }
 
@@ -53,8 +54,9 @@ run_case() {  # run_case <name> <truth> <noise %> <seed> <features true|false> <
   server -i "$truth" -o "${name}_noisy.ply" -s noise.mlx
   read -r ea ev < <(measure "$truth" "${name}_noisy.ply")
   echo "| $name | noisy input | $ea | $ev | - |"
-  local methods=(ours bilateral twostep laplacian taubin hc)
+  local methods=(ours paper bilateral twostep laplacian taubin hc)
   script ours.mlx "$(with "$(resource_filter denoise)" detectFeatures="$features")"
+  script paper.mlx "$(with "$(resource_filter denoise)" detectFeatures="$features" refineNormalPasses=0)"
   script bilateral.mlx "$(with "$(resource_filter bilateral)" sigmaS="$sigma_s" passes="$passes")"
   script twostep.mlx "$(twostep "$steps")"
   script laplacian.mlx "$LAPLACIAN"
@@ -68,7 +70,8 @@ run_case() {  # run_case <name> <truth> <noise %> <seed> <features true|false> <
     read -r ea ev < <(measure "$truth" "${name}_$m.ply")
     local label
     case $m in
-      ours) label="HHT: Feature-Preserving Denoise (denoise.mlx$([ "$features" = false ] && echo ', no features'))";;
+      ours) label="HHT: Feature-Preserving Denoise (denoise.mlx$([ "$features" = false ] && echo ', no features' || true))";;
+      paper) label="HHT, the paper's method alone (refineNormalPasses 0)";;
       bilateral) label="Bilateral (sigma_c 0.4, sigma_s $sigma_s, $passes passes)";;
       twostep) label="TwoStep Smooth ($steps steps, 60 deg, 20, 20)";;
       laplacian) label="Laplacian Smooth (defaults)";;

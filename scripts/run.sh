@@ -33,4 +33,5 @@ run_script "${name}_spectra" hilbert_spectra
 run_script "${name}_noisy" add_noise
 run_script "${name}_noisy_smoothed" add_noise smooth
 run_script "${name}_enhanced" enhance
+run_script "${name}_noisy_denoised" add_noise denoise
 echo "[run] results in $OUT (frequency_distribution.png/.csv: the IMFs' frequency distribution)"
