@@ -98,6 +98,18 @@ TEST(MeshlabserverDenoise, BilateralSmoothsANoisyTorusLikeModel) {
   EXPECT_LT(mean_dihedral_angle(smoothed), 0.8 * mean_dihedral_angle(noisy));
 }
 
+TEST(MeshlabserverDenoise, MeshWithHolesIsDenoised) {
+  TriMesh in, out;
+  ASSERT_EQ(vcg::tri::io::ImporterOFF<TriMesh>::Open(in, data_mesh("elephant-with-holes").c_str()), 0);
+  const ServerRun run = run_meshlabserver(data_mesh("elephant-with-holes"),
+                                          chain_scripts("holes_denoise", {"add_noise.mlx", "denoise.mlx"}), "holes_denoise");
+  load(run, out);
+  ASSERT_EQ(out.vn, in.vn);
+  EXPECT_NE(run.log.find("feature lines"), std::string::npos) << run.log;  // the hole boundaries are feature lines
+  for (const auto& v : out.vert) ASSERT_TRUE(std::isfinite(v.cP()[0]) && std::isfinite(v.cP()[1]) && std::isfinite(v.cP()[2]));
+  EXPECT_LT(max_distance(out, in), 0.05 * bbox_diagonal(in));
+}
+
 TEST(MeshlabserverDenoise, BadInputLeavesNothingBehind) {
   const std::string cloud = output_path("denoise_bad_cloud.off");
   std::ofstream(cloud) << "OFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
