@@ -4,7 +4,6 @@
 #include "normal_vertex_update.h"
 
 #include <algorithm>
-#include <chrono>
 #include <map>
 
 namespace hht {
@@ -49,12 +48,7 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
                                 Positions& result, DenoiseReport& report, std::string& error,
                                 const Progress& progress) {
   report = DenoiseReport{};
-  auto t0 = std::chrono::steady_clock::now();
-  auto stage_done = [&](const char* stage) {
-    const auto now = std::chrono::steady_clock::now();
-    report.stages.push_back({stage, std::chrono::duration<double>(now - t0).count()});
-    t0 = now;
-  };
+  StageClock clock(report.stages);
   auto step = [&](int percent, const char* what) {
     if (progress) progress(percent, what);
   };
@@ -72,13 +66,13 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
   report.feature_vertices = static_cast<int>(std::count(is_feature.begin(), is_feature.end(), 1));
   report.lines = static_cast<int>(report.feature_lines.lines.size());
   report.corners = static_cast<int>(report.feature_lines.corners.size());
-  stage_done("features");
+  clock.done("features");
 
   step(20, "Curvature signal");
   MeanCurvature curvature;
   if (!mean_curvature(positions, faces, curvature, error)) return false;
   const Eigen::VectorXd& g = curvature.signal;
-  stage_done("signal");
+  clock.done("signal");
 
   // Non-feature signal: sifted with feature vertices masked, low-passed, averaged over cycles.
   Eigen::VectorXd filtered = Eigen::VectorXd::Zero(n);
@@ -116,7 +110,7 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     if (k == 0) report.cycle = std::move(cycle);
   }
   filtered /= cycles;
-  stage_done("non-feature signal");
+  clock.done("non-feature signal");
 
   // Feature lines: each its own signal (corners excluded; they are averaged below).
   step(65, "Feature line signals");
@@ -147,13 +141,13 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     const auto& acc = by_type[{fl.corner_valence[c], g[fl.corners[c]] >= 0}];
     filtered[fl.corners[c]] = acc.first / acc.second;
   }
-  stage_done("feature signals");
+  clock.done("feature signals");
 
   step(70, "Reconstruction");
   if (!reconstruct_positions(positions, faces, curvature, filtered, options.reconstruction, result, report.reconstruction,
                              error))
     return false;
-  stage_done("reconstruction");
+  clock.done("reconstruction");
 
   if (options.refine_normal_passes > 0 && options.refine_vertex_iterations > 0) {
     step(90, "Refinement: guided normal filtering and vertex update");
@@ -161,7 +155,7 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     if (!guided_face_normals(result, faces, options.refine_normal_passes, options.refine_normal_sigma, normals, error))
       return false;
     result = fit_vertices_to_normals(result, faces, normals, options.refine_vertex_iterations);
-    stage_done("refinement");
+    clock.done("refinement");
   }
   step(100, "Done");
   return true;

@@ -2,8 +2,6 @@
 
 #include "mesh_checks.h"
 
-#include <algorithm>
-#include <chrono>
 
 namespace hht {
 
@@ -11,18 +9,7 @@ bool spectral_mesh_filter(const Positions& positions, const Faces& faces, const 
                           Positions& result, SpectralMeshFilterReport& report, std::string& error,
                           const Progress& progress) {
   report = SpectralMeshFilterReport{};
-  auto t0 = std::chrono::steady_clock::now();
-  auto stage_done = [&](const char* stage) {
-    const auto now = std::chrono::steady_clock::now();
-    const double seconds = std::chrono::duration<double>(now - t0).count();
-    auto same = std::find_if(report.stages.begin(), report.stages.end(),
-                             [&](const StageTime& s) { return std::string(s.stage) == stage; });
-    if (same == report.stages.end())
-      report.stages.push_back({stage, seconds});
-    else
-      same->seconds += seconds;  // stages repeated per cycle add up
-    t0 = now;
-  };
+  StageClock clock(report.stages);
   auto step = [&](int percent, const char* what) {
     if (progress) progress(percent, what);
   };
@@ -30,12 +17,12 @@ bool spectral_mesh_filter(const Positions& positions, const Faces& faces, const 
 
   step(2, "Hamiltonian cycle");
   if (!hamiltonian_cycle(faces, static_cast<int>(positions.rows()), options.cycle, report.cycle, error)) return false;
-  stage_done("cycle");
+  clock.done("cycle");
 
   step(10, "Curvature signal");
   MeanCurvature curvature;
   if (!mean_curvature(positions, faces, curvature, error)) return false;
-  stage_done("signal");
+  clock.done("signal");
 
   // One decomposition and filtered signal per cycle; the first cycle is the one reported.
   Eigen::VectorXd filtered = Eigen::VectorXd::Zero(curvature.signal.size());
@@ -47,22 +34,22 @@ bool spectral_mesh_filter(const Positions& positions, const Faces& faces, const 
       CycleOptions seeded = options.cycle;
       seeded.seed = options.cycle.seed + 7919 * k;
       if (!hamiltonian_cycle(faces, static_cast<int>(positions.rows()), seeded, other, error)) return false;
-      stage_done("cycle");
+      clock.done("cycle");
     }
     const HamiltonianCycle& cycle = k == 0 ? report.cycle : other;
     step(15 + 40 * k / cycles, "Empirical mode decomposition");
     CycleDecomposition d;
     if (!decompose_along_cycle(cycle, curvature.signal, options.emd, d, error)) return false;
-    stage_done("emd");
+    clock.done("emd");
     if (options.keep_coarsest) {
       filtered += coarsest_on_vertices(cycle, d, std::max(0, options.coarsest), faces, curvature.signal);
-      stage_done("filter");
+      clock.done("filter");
     } else {
       step(15 + 40 * k / cycles + 20 / cycles, "Hilbert spectra");
       compute_spectra(d);
-      stage_done("spectra");
+      clock.done("spectra");
       filtered += filtered_on_vertices(cycle, d, options.band, options.gain, faces, curvature.signal);
-      stage_done("filter");
+      clock.done("filter");
     }
     if (k == 0) decomposition = std::move(d);
   }
@@ -73,7 +60,7 @@ bool spectral_mesh_filter(const Positions& positions, const Faces& faces, const 
   step(55, "Reconstruction (Laplacian least squares)");
   if (!reconstruct_positions(positions, faces, curvature, filtered, options.reconstruction, result, report.reconstruction, error))
     return false;
-  stage_done("reconstruction");
+  clock.done("reconstruction");
   report.max_displacement = (result - positions).rowwise().norm().maxCoeff();
   step(100, "Done");
   return true;

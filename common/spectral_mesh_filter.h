@@ -5,6 +5,7 @@
 
 #include "cycle_decomposition.h"
 #include "laplacian_reconstruction.h"
+#include "stage_clock.h"
 
 #include <functional>
 #include <string>
@@ -23,11 +24,6 @@ struct SpectralMeshFilterOptions {
   double gain = 0.0;
   int coarsest = 0;
   ReconstructionOptions reconstruction;
-};
-
-struct StageTime {
-  const char* stage;
-  double seconds;
 };
 
 struct SpectralMeshFilterReport {

@@ -132,13 +132,7 @@ bool apply(FilterRun& run) {
                 .arg(o.refine_normal_passes).arg(o.refine_vertex_iterations));
   else
     run.log("  no refinement (the paper's method alone)");
-  QString times = "  times (s):";
-  double total = 0;
-  for (const auto& s : report.stages) {
-    times += QString(" %1 %2,").arg(s.stage).arg(s.seconds, 0, 'f', 3);
-    total += s.seconds;
-  }
-  run.log(times + QString(" total %1").arg(total, 0, 'f', 3));
+  run.log(stage_times_line(report.stages));
   return true;
 }
 

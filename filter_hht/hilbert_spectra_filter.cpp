@@ -116,10 +116,7 @@ bool apply(FilterRun& run) {
   const auto summary = hht::summarize_imfs(decomposition);
   run.log(QString("  %1 IMFs; per IMF: sifts, mean instantaneous frequency (cycles/sample), share of energy:")
               .arg(summary.size()));
-  for (size_t k = 0; k < summary.size(); ++k)
-    run.log(QString("    IMF %1: %2 sifts, frequency %3, energy %4%")
-                .arg(k + 1).arg(summary[k].sifts).arg(summary[k].mean_frequency, 0, 'f', 4)
-                .arg(100.0 * summary[k].energy_share, 0, 'f', 2));
+  for (const QString& line : imf_summary_lines(summary)) run.log(line);
   run.log(QString("  quality = %1%2, colour ramp over [%3, %4]")
               .arg(QStringList{"IMF", "instantaneous amplitude of IMF", "instantaneous frequency of IMF",
                                "instantaneous phase of IMF", "residue"}[output])

@@ -26,4 +26,23 @@ std::pair<double, double> show_as_quality(MeshModel& model, const Eigen::VectorX
   return range;
 }
 
+QString stage_times_line(const std::vector<hht::StageTime>& stages) {
+  QString line = "  times (s):";
+  double total = 0;
+  for (const auto& s : stages) {
+    line += QString(" %1 %2,").arg(s.stage).arg(s.seconds, 0, 'f', 3);
+    total += s.seconds;
+  }
+  return line + QString(" total %1").arg(total, 0, 'f', 3);
+}
+
+QStringList imf_summary_lines(const std::vector<hht::ImfSummary>& imfs) {
+  QStringList lines;
+  for (size_t k = 0; k < imfs.size(); ++k)
+    lines << QString("    IMF %1: %2 sifts, frequency %3, energy %4%")
+                 .arg(k + 1).arg(imfs[k].sifts).arg(imfs[k].mean_frequency, 0, 'f', 4)
+                 .arg(100.0 * imfs[k].energy_share, 0, 'f', 2);
+  return lines;
+}
+
 }  // namespace hht_plugin

@@ -2,7 +2,9 @@
 // a per-vertex scalar as quality with a colour ramp, and timing stages for the log.
 #pragma once
 
+#include "cycle_decomposition.h"
 #include "mesh_arrays.h"
+#include "stage_clock.h"
 
 #include <common/meshmodel.h>
 
@@ -18,6 +20,12 @@ bool read_triangle_mesh(const CMeshO& m, hht::Positions& positions, hht::Faces& 
 // Writes `values` (one per live vertex) into vertex quality and colours the mesh by a ramp
 // over their [percent, 100 - percent] percentile range, returned.
 std::pair<double, double> show_as_quality(MeshModel& model, const Eigen::VectorXd& values, double percent);
+
+// "  times (s): cycle 0.012, emd 0.003, ..., total 0.085"
+QString stage_times_line(const std::vector<hht::StageTime>& stages);
+
+// One line per IMF: "    IMF k: s sifts, frequency f, energy e%".
+QStringList imf_summary_lines(const std::vector<hht::ImfSummary>& imfs);
 
 class Stopwatch {
  public:

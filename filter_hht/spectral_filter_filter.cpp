@@ -111,10 +111,7 @@ bool apply(FilterRun& run) {
   run.log(QString("  cycle: %1 of %2 vertices (%3 isolated, their change interpolated from the one-ring), %4 segment(s)")
               .arg(report.cycle.order.size()).arg(positions.rows()).arg(report.cycle.isolated).arg(report.cycle.components));
   run.log(QString("  %1 IMFs (mean frequency, energy share):").arg(report.imfs.size()));
-  for (size_t k = 0; k < report.imfs.size(); ++k)
-    run.log(QString("    IMF %1: %2 sifts, frequency %3, energy %4%")
-                .arg(k + 1).arg(report.imfs[k].sifts).arg(report.imfs[k].mean_frequency, 0, 'f', 4)
-                .arg(100.0 * report.imfs[k].energy_share, 0, 'f', 2));
+  for (const QString& line : imf_summary_lines(report.imfs)) run.log(line);
   run.log(QString("  RMS change of the curvature signal %1; reconstruction: lambda %2, %3 target, %4 CG iterations, "
                   "relative residual %5")
               .arg(report.signal_change_rms).arg(options.reconstruction.lambda)
@@ -122,13 +119,7 @@ bool apply(FilterRun& run) {
               .arg(report.reconstruction.iterations).arg(report.reconstruction.relative_residual, 0, 'g', 3));
   run.log(QString("  largest vertex move %1 (%2% of the bounding-box diagonal)")
               .arg(report.max_displacement).arg(100.0 * report.max_displacement / diagonal, 0, 'f', 4));
-  QString times = "  times (s):";
-  double total = 0;
-  for (const auto& s : report.stages) {
-    times += QString(" %1 %2,").arg(s.stage).arg(s.seconds, 0, 'f', 3);
-    total += s.seconds;
-  }
-  run.log(times + QString(" total %1").arg(total, 0, 'f', 3));
+  run.log(stage_times_line(report.stages));
   return true;
 }
 

@@ -1,5 +1,6 @@
 #include "meshlabserver_harness.h"
 
+#include <gtest/gtest.h>
 #include <wrap/io_trimesh/import_ply.h>
 
 #include <cstdlib>
@@ -68,6 +69,21 @@ std::string chain_scripts(const std::string& tag, const std::vector<std::string>
     body = std::regex_replace(body, param, "$01" + value + "\"");  // $01: value may start with a digit
   }
   return write_script(tag, body);
+}
+
+void expect_bad_input_refused(const std::vector<std::string>& scripts, const std::string& tag) {
+  const std::string cloud = output_path(tag + "_cloud.off");
+  std::ofstream(cloud) << "OFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+  const std::string nan = output_path(tag + "_nan.off");
+  std::ofstream(nan) << "OFF\n4 4 0\n0 0 0\n1 0 0\nnan 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
+  for (const auto& script : scripts)
+    for (const auto& [input, message] : {std::pair{cloud, "no faces"}, std::pair{nan, "NaN"}}) {
+      const ServerRun run = run_meshlabserver(input, resource(script), tag);
+      EXPECT_NE(run.exit_code, 0) << script;
+      EXPECT_NE(run.log.find("failed: Nothing was changed"), std::string::npos) << script << "\n" << run.log;
+      EXPECT_NE(run.log.find(message), std::string::npos) << script << "\n" << run.log;
+      EXPECT_FALSE(fs::exists(run.output)) << script;
+    }
 }
 
 double mean_dihedral_angle(const TriMesh& m) {

@@ -34,6 +34,10 @@ std::string write_script(const std::string& tag, const std::string& body);  // a
 std::string chain_scripts(const std::string& tag, const std::vector<std::string>& resources,
                           const std::vector<std::pair<std::string, std::string>>& overrides = {});
 
+// Runs each shipped script on a point cloud and on a mesh with a NaN coordinate: each must
+// fail with a message naming the problem and save nothing.
+void expect_bad_input_refused(const std::vector<std::string>& scripts, const std::string& tag);
+
 double mean_dihedral_angle(const TriMesh& m);  // radians, over edges shared by two faces
 double max_distance(const TriMesh& a, const TriMesh& b);  // same vertex order
 double bbox_diagonal(const TriMesh& m);

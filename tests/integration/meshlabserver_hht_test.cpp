@@ -97,17 +97,7 @@ TEST(MeshlabserverHht, NoiseHasTheRequestedSigma) {
 
 
 TEST(MeshlabserverHht, BadInputLeavesNothingBehind) {
-  const std::string cloud = output_path("hht_bad_cloud.off");
-  std::ofstream(cloud) << "OFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
-  const std::string nan = output_path("hht_bad_nan.off");
-  std::ofstream(nan) << "OFF\n4 4 0\n0 0 0\n1 0 0\nnan 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n";
-  for (const char* script : {"hilbert_spectra.mlx", "smooth.mlx", "enhance.mlx", "add_noise.mlx"})
-    for (const auto& [input, message] : {std::pair{cloud, "no faces"}, std::pair{nan, "NaN"}}) {
-      const ServerRun run = run_meshlabserver(input, resource(script), "hht_bad");
-      EXPECT_NE(run.exit_code, 0) << script;
-      EXPECT_NE(run.log.find(message), std::string::npos) << script << "\n" << run.log;
-      EXPECT_FALSE(fs::exists(run.output)) << script;
-    }
+  expect_bad_input_refused({"hilbert_spectra.mlx", "smooth.mlx", "enhance.mlx", "add_noise.mlx"}, "hht_bad");
 }
 
 }  // namespace
