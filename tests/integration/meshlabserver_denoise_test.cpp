@@ -14,12 +14,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void load(const ServerRun& run, TriMesh& m) {
-  bool has_quality = false;
-  ASSERT_EQ(run.exit_code, 0) << run.log;
-  ASSERT_TRUE(load_ply(run.output, m, has_quality)) << run.output;
-}
-
 // Runs meshlabserver with two inputs: layer 0 the reference, layer 1 (current) the result.
 ServerRun compare(const std::string& reference, const std::string& result, const std::string& tag) {
   ServerRun run;

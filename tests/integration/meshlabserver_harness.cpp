@@ -47,6 +47,12 @@ bool load_ply(const std::string& path, TriMesh& m, bool& has_quality) {
   return true;
 }
 
+void load(const ServerRun& run, TriMesh& m) {
+  bool has_quality = false;
+  ASSERT_EQ(run.exit_code, 0) << run.log;
+  ASSERT_TRUE(load_ply(run.output, m, has_quality)) << run.output;
+}
+
 std::string write_script(const std::string& tag, const std::string& body) {
   const std::string path = output_path(tag + ".mlx");
   std::ofstream(path) << "<!DOCTYPE FilterScript>\n<FilterScript>\n" << body << "</FilterScript>\n";

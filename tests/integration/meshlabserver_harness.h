@@ -27,6 +27,9 @@ std::string output_path(const std::string& file);
 // Loads a PLY with vertex quality; fails the calling test when it cannot.
 bool load_ply(const std::string& path, TriMesh& m, bool& has_quality);
 
+// The mesh a successful run saved; fails the calling test when the run failed or saved nothing.
+void load(const ServerRun& run, TriMesh& m);
+
 std::string write_script(const std::string& tag, const std::string& body);  // a one-off .mlx
 
 // The <filter> elements of shipped scripts, in order, with `overrides` (name -> value) applied

@@ -12,12 +12,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void load(const ServerRun& run, TriMesh& m) {
-  bool has_quality = false;
-  ASSERT_EQ(run.exit_code, 0) << run.log;
-  ASSERT_TRUE(load_ply(run.output, m, has_quality)) << run.output;
-}
-
 void load_input(const std::string& name, TriMesh& m) {
   ASSERT_EQ(vcg::tri::io::ImporterOFF<TriMesh>::Open(m, data_mesh(name).c_str()), 0);
 }
