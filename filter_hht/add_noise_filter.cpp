@@ -30,8 +30,7 @@ bool apply(FilterRun& run) {
   const auto direction = run.parameters.getEnum("direction") == 1 ? hht::NoiseDirection::Normal : hht::NoiseDirection::Random;
   const hht::Positions noisy = hht::add_gaussian_noise(positions, faces, percent, direction,
                                                        static_cast<unsigned>(run.parameters.getInt("seed")));
-  hht::set_vertex_positions(model.cm, noisy);
-  model.UpdateBoxAndNormals();
+  move_vertices(model, noisy);
   const double edge = hht::mean_edge_length(positions, faces);
   const double rms = std::sqrt((noisy - positions).rowwise().squaredNorm().mean());
   run.log(QString("Gaussian noise: sigma %1% of the mean edge length %2 = %3, %4; measured RMS displacement %5")

@@ -33,8 +33,7 @@ bool apply(FilterRun& run) {
   }
   Stopwatch clock;
   run.report(10, "Bilateral denoising");
-  hht::set_vertex_positions(model.cm, hht::bilateral_denoise(positions, faces, o));
-  model.UpdateBoxAndNormals();
+  move_vertices(model, hht::bilateral_denoise(positions, faces, o));
   run.log(QString("Bilateral mesh denoising: sigma_c %1, sigma_s %2 (x mean edge length), %3 passes; %4 s")
               .arg(o.sigma_c).arg(o.sigma_s).arg(o.passes).arg(clock.seconds(), 0, 'f', 3));
   return true;

@@ -25,7 +25,7 @@ bool apply(FilterRun& run) {
   hht::MeanCurvature curvature;
   std::string message;
   if (!hht::mean_curvature(positions, faces, curvature, message)) {
-    run.error = QString::fromStdString("Nothing was changed: " + message + ".");
+    run.error = nothing_changed(message);
     return false;
   }
   run.report(90, "Writing the signal into vertex quality");

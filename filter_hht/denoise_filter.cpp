@@ -98,11 +98,10 @@ bool apply(FilterRun& run) {
   std::string message;
   auto progress = [&](int percent, const char* stage) { run.report(percent, stage); };
   if (!hht::feature_preserving_denoise(positions, faces, o, result, report, message, progress)) {
-    run.error = QString::fromStdString("Nothing was changed: " + message + ".");
+    run.error = nothing_changed(message);
     return false;
   }
-  hht::set_vertex_positions(model.cm, result);
-  model.UpdateBoxAndNormals();
+  move_vertices(model, result);
   const int show = par.getEnum("showFeatures");
   if (show == SelectFeatureVertices) {
     size_t i = 0;

@@ -62,7 +62,7 @@ bool apply(FilterRun& run) {
   hht::HamiltonianCycle cycle;
   std::string message;
   if (!hht::hamiltonian_cycle(faces, static_cast<int>(positions.rows()), options, cycle, message)) {
-    run.error = QString::fromStdString("Nothing was changed: " + message + ".");
+    run.error = nothing_changed(message);
     return false;
   }
   const double cycle_seconds = clock.lap();

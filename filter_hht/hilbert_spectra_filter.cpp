@@ -69,7 +69,7 @@ bool apply(FilterRun& run) {
     run.report(2, "Curvature signal");
     hht::MeanCurvature curvature;
     if (!hht::mean_curvature(positions, faces, curvature, message)) {
-      run.error = QString::fromStdString("Nothing was changed: " + message + ".");
+      run.error = nothing_changed(message);
       return false;
     }
     signal = curvature.signal;
@@ -79,7 +79,7 @@ bool apply(FilterRun& run) {
   run.report(10, "Hamiltonian cycle");
   hht::HamiltonianCycle cycle;
   if (!hht::hamiltonian_cycle(faces, static_cast<int>(positions.rows()), cycle_options(par), cycle, message)) {
-    run.error = QString::fromStdString("Nothing was changed: " + message + ".");
+    run.error = nothing_changed(message);
     return false;
   }
   const double cycle_seconds = clock.lap();
@@ -87,7 +87,7 @@ bool apply(FilterRun& run) {
   run.report(20, "Empirical mode decomposition");
   hht::CycleDecomposition decomposition;
   if (!hht::decompose_along_cycle(cycle, signal, emd_options(par), decomposition, message)) {
-    run.error = QString::fromStdString("Nothing was changed: " + message + ".");
+    run.error = nothing_changed(message);
     return false;
   }
   const double emd_seconds = clock.lap();

@@ -11,10 +11,19 @@ bool read_triangle_mesh(const CMeshO& m, hht::Positions& positions, hht::Faces& 
   hht::mesh_to_arrays(m, positions, faces);
   std::string message;
   if (!hht::check_triangle_mesh(positions, faces, message)) {
-    error = QString::fromStdString("Nothing was changed: " + message + ".");
+    error = nothing_changed(message);
     return false;
   }
   return true;
+}
+
+QString nothing_changed(const std::string& why) {
+  return QString::fromStdString("Nothing was changed: " + why + ".");
+}
+
+void move_vertices(MeshModel& model, const hht::Positions& positions) {
+  hht::set_vertex_positions(model.cm, positions);
+  model.UpdateBoxAndNormals();
 }
 
 std::pair<double, double> show_as_quality(MeshModel& model, const Eigen::VectorXd& values, double percent) {

@@ -17,6 +17,12 @@ namespace hht_plugin {
 // Arrays of `m`'s live vertices and faces; fails with a message on an empty or broken mesh.
 bool read_triangle_mesh(const CMeshO& m, hht::Positions& positions, hht::Faces& faces, QString& error);
 
+// The error of a filter that stopped before touching the mesh: "Nothing was changed: <why>.".
+QString nothing_changed(const std::string& why);
+
+// New positions (one per live vertex) into the mesh, with its bounding box and normals updated.
+void move_vertices(MeshModel& model, const hht::Positions& positions);
+
 // Writes `values` (one per live vertex) into vertex quality and colours the mesh by a ramp
 // over their [percent, 100 - percent] percentile range, returned.
 std::pair<double, double> show_as_quality(MeshModel& model, const Eigen::VectorXd& values, double percent);

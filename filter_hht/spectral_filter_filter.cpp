@@ -95,11 +95,10 @@ bool apply(FilterRun& run) {
   std::string message;
   auto progress = [&](int percent, const char* stage) { run.report(percent, stage); };
   if (!hht::spectral_mesh_filter(positions, faces, options, result, report, message, progress)) {
-    run.error = QString::fromStdString("Nothing was changed: " + message + ".");
+    run.error = nothing_changed(message);
     return false;
   }
-  hht::set_vertex_positions(model.cm, result);
-  model.UpdateBoxAndNormals();
+  move_vertices(model, result);
 
   const double diagonal = (positions.colwise().maxCoeff() - positions.colwise().minCoeff()).norm();
   if (options.keep_coarsest)
