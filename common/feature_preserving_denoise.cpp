@@ -1,6 +1,7 @@
 #include "feature_preserving_denoise.h"
 
 #include "mesh_checks.h"
+#include "guided_normal_denoise.h"
 #include "normal_vertex_update.h"
 
 #include <algorithm>
@@ -42,31 +43,13 @@ std::vector<double> laplacian_smoothing(std::vector<double> s, bool closed, int 
   return s;
 }
 
-}  // namespace
-
-bool feature_preserving_denoise(const Positions& positions, const Faces& faces, const DenoiseOptions& options,
-                                Positions& result, DenoiseReport& report, std::string& error,
-                                const Progress& progress) {
-  report = DenoiseReport{};
-  StageClock clock(report.stages);
-  auto step = [&](int percent, const char* what) {
-    if (progress) progress(percent, what);
-  };
-  if (!check_triangle_mesh(positions, faces, error)) return false;
+// The paper's sec. 4.3 on `positions` (features already in `report`), rebuilt into `result`.
+bool paper_stage(const Positions& positions, const Faces& faces, const DenoiseOptions& options, Positions& result,
+                 DenoiseReport& report, StageClock& clock, const std::function<void(int, const char*)>& step,
+                 std::string& error) {
   const int n = static_cast<int>(positions.rows());
-
-  step(2, "Sharp feature detection");
-  report.type.assign(n, FeatureType::None);
-  if (options.detect_features) {
-    if (!detect_sharp_features(positions, faces, options.features, report.type, error)) return false;
-    report.feature_lines = link_feature_lines(positions, faces, report.type);
-  }
   std::vector<unsigned char> is_feature(n, 0);
   for (int v = 0; v < n; ++v) is_feature[v] = report.type[v] != FeatureType::None;
-  report.feature_vertices = static_cast<int>(std::count(is_feature.begin(), is_feature.end(), 1));
-  report.lines = static_cast<int>(report.feature_lines.lines.size());
-  report.corners = static_cast<int>(report.feature_lines.corners.size());
-  clock.done("features");
 
   step(20, "Curvature signal");
   MeanCurvature curvature;
@@ -149,12 +132,82 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     return false;
   clock.done("reconstruction");
 
+  return true;
+}
+
+}  // namespace
+
+bool feature_preserving_denoise(const Positions& positions, const Faces& faces, const DenoiseOptions& options,
+                                Positions& result, DenoiseReport& report, std::string& error,
+                                const Progress& progress) {
+  report = DenoiseReport{};
+  StageClock clock(report.stages);
+  auto step = [&](int percent, const char* what) {
+    if (progress) progress(percent, what);
+  };
+  if (!check_triangle_mesh(positions, faces, error)) return false;
+  const int n = static_cast<int>(positions.rows());
+
+  step(2, "Noise estimate (finest IMF)");
+  double sigma = options.noise;
+  if (!(sigma > 0)) {
+    HamiltonianCycle cycle;
+    if (!hamiltonian_cycle(faces, n, options.cycle, cycle, error)) return false;
+    if (!estimate_noise(positions, faces, cycle, options.emd, report.noise, error)) return false;
+    report.cycle = std::move(cycle);
+    sigma = report.noise.relative();
+    clock.done("noise estimate");
+  }
+  report.sigma_used = sigma;
+
+  // Features of the input, for the paper's stage and for showing them.
+  report.type.assign(n, FeatureType::None);
+  if (options.detect_features) {
+    step(5, "Sharp feature detection");
+    if (!detect_sharp_features(positions, faces, options.features, report.type, error)) return false;
+    report.feature_lines = link_feature_lines(positions, faces, report.type);
+    report.feature_vertices =
+        static_cast<int>(std::count_if(report.type.begin(), report.type.end(), [](FeatureType t) { return t != FeatureType::None; }));
+    report.lines = static_cast<int>(report.feature_lines.lines.size());
+    report.corners = static_cast<int>(report.feature_lines.corners.size());
+    clock.done("features");
+  }
+
+  Positions start = positions;
+  if (options.untangle) {
+    step(8, "Untangling: noise-adaptive smoothing");
+    NoiseAdaptiveSmoothingOptions smoothing;
+    smoothing.noise = sigma;
+    NoiseAdaptiveSmoothingReport smoothing_report;
+    Positions smoothed;
+    if (!noise_adaptive_smooth(positions, faces, smoothing, smoothed, smoothing_report, error)) return false;
+    for (Eigen::Index f = 0; f < faces.rows(); ++f) {
+      const auto normal = [&](const Positions& p) {
+        const Eigen::RowVector3d a = p.row(faces(f, 0));
+        return Eigen::RowVector3d((p.row(faces(f, 1)) - a).cross(p.row(faces(f, 2)) - a));
+      };
+      report.flipped_faces += normal(positions).dot(normal(smoothed)) < 0;
+    }
+    report.untangled = report.flipped_faces > kTangledShare * static_cast<double>(faces.rows());
+    if (report.untangled) start = smoothed;
+    clock.done("untangling");
+  }
+
+  result = start;
+  if (options.paper_stage && !paper_stage(start, faces, options, result, report, clock, step, error)) return false;
+
+  report.refine_rounds = options.refine_rounds > 0
+                             ? options.refine_rounds
+                             : std::max(1, static_cast<int>(std::lround(sigma / kNoisePerRound)));
   if (options.refine_normal_passes > 0 && options.refine_vertex_iterations > 0) {
     step(90, "Refinement: guided normal filtering and vertex update");
-    Positions normals;
-    if (!guided_face_normals(result, faces, options.refine_normal_passes, options.refine_normal_sigma, normals, error))
-      return false;
-    result = fit_vertices_to_normals(result, faces, normals, options.refine_vertex_iterations);
+    GuidedNormalDenoiseOptions refine;
+    refine.rounds = report.refine_rounds;
+    refine.normal_passes = options.refine_normal_passes;
+    refine.sigma = options.refine_normal_sigma;
+    refine.vertex_iterations = options.refine_vertex_iterations;
+    const Positions rebuilt = result;
+    if (!guided_normal_denoise(rebuilt, faces, refine, result, error)) return false;
     clock.done("refinement");
   }
   step(100, "Done");

@@ -23,6 +23,10 @@ Positions add_gaussian_noise(const Positions& positions, const Faces& faces, dou
   for (Eigen::Index i = 0; i < positions.rows(); ++i) {
     Eigen::RowVector3d dir = normals.row(i);
     if (dir.squaredNorm() == 0) continue;  // no face, no normal: left in place
+    if (direction == NoiseDirection::Isotropic) {
+      out.row(i) += sigma * Eigen::RowVector3d(gauss(rng), gauss(rng), gauss(rng));
+      continue;
+    }
     if (direction == NoiseDirection::Random) {
       do {
         dir = Eigen::RowVector3d(gauss(rng), gauss(rng), gauss(rng));

@@ -1,13 +1,16 @@
-// The paper's noise model: each vertex moves by a Gaussian amount of standard deviation
-// sigma = percent of the mean edge length, along a uniformly random direction or along its
-// normal. Reproducible for a given seed (on one standard library).
+// Gaussian noise of standard deviation sigma = percent of the mean edge length:
+//  - Random: the paper's model, a Gaussian amount along a uniformly random direction;
+//  - Normal: a Gaussian amount along the area-weighted vertex normal (the denoising literature);
+//  - Isotropic: independent Gaussian noise on each coordinate (what a scanner's noise looks
+//    like: sqrt(3) sigma RMS displacement, two thirds of its power tangential).
+// Reproducible for a given seed (on one standard library).
 #pragma once
 
 #include "mesh_arrays.h"
 
 namespace hht {
 
-enum class NoiseDirection { Random, Normal };
+enum class NoiseDirection { Random, Normal, Isotropic };
 
 double mean_edge_length(const Positions& positions, const Faces& faces);
 

@@ -12,8 +12,12 @@ void declare(MeshDocument&, RichParameterList& p) {
   p.addParam(RichFloat("sigmaPercent", 10.0f, "Sigma (% of mean edge length)",
                        "Standard deviation of the displacement, in percent of the mesh's mean edge length (the paper "
                        "uses 5% for Fandisk, 10% for the cube and the torus)."));
-  p.addParam(RichEnum("direction", 0, QStringList{"Random direction", "Along the vertex normal"}, "Direction",
-                      "Each vertex moves along a uniformly random direction, or along its area-weighted normal."));
+  p.addParam(RichEnum("direction", 0,
+                      QStringList{"Random direction", "Along the vertex normal", "Isotropic (each coordinate)"},
+                      "Direction",
+                      "Each vertex moves by a Gaussian amount along a uniformly random direction (the paper's "
+                      "model), or along its area-weighted normal (the denoising literature's), or by independent "
+                      "Gaussian noise on each coordinate (a scanner's noise, two thirds of it tangential)."));
   p.addParam(RichInt("seed", 1, "Random seed", "The same seed gives the same noise."));
 }
 
@@ -27,7 +31,11 @@ bool apply(FilterRun& run) {
     run.error = "Nothing was changed: sigma must be a finite percentage >= 0.";
     return false;
   }
-  const auto direction = run.parameters.getEnum("direction") == 1 ? hht::NoiseDirection::Normal : hht::NoiseDirection::Random;
+  const int choice = run.parameters.getEnum("direction");
+  const auto direction = choice == 1   ? hht::NoiseDirection::Normal
+                         : choice == 2 ? hht::NoiseDirection::Isotropic
+                                       : hht::NoiseDirection::Random;
+  static const char* const names[] = {"random directions", "along the normals", "isotropic, each coordinate"};
   const hht::Positions noisy = hht::add_gaussian_noise(positions, faces, percent, direction,
                                                        static_cast<unsigned>(run.parameters.getInt("seed")));
   move_vertices(model, noisy);
@@ -35,7 +43,7 @@ bool apply(FilterRun& run) {
   const double rms = std::sqrt((noisy - positions).rowwise().squaredNorm().mean());
   run.log(QString("Gaussian noise: sigma %1% of the mean edge length %2 = %3, %4; measured RMS displacement %5")
               .arg(percent).arg(edge).arg(percent / 100.0 * edge)
-              .arg(direction == hht::NoiseDirection::Normal ? "along the normals" : "random directions").arg(rms));
+              .arg(names[static_cast<int>(direction)]).arg(rms));
   return true;
 }
 

@@ -1,9 +1,12 @@
-// "HHT: Feature-Preserving Denoise": the paper's divide-and-conquer denoising (sec. 4.3).
+// "HHT: Feature-Preserving Denoise": noise estimated by the HHT, untangling, guided normal
+// refinement in rounds set by the noise, and optionally the paper's divide-and-conquer stage
+// (sec. 4.3) before it (common/feature_preserving_denoise.h).
 #include "filter_spec.h"
 #include "hht_parameters.h"
 #include "mesh_adapter.h"
 
 #include "feature_preserving_denoise.h"
+#include "gaussian_noise.h"
 
 #include <vcg/complex/allocate.h>
 
@@ -15,6 +18,18 @@ enum Show { ShowNothing, SelectFeatureVertices, FeatureLineLayer };
 
 void declare(MeshDocument&, RichParameterList& p) {
   const hht::DenoiseOptions d;
+  p.addParam(RichFloat("noisePercent", 0.0f, "Noise level (% of mean edge, 0 = estimate)",
+                       "Standard deviation of the noise in percent of the mean edge length. 0 estimates it from the "
+                       "finest IMF of the one-ring height signal along a Hamiltonian cycle; it sets the number of "
+                       "refinement rounds and the untangling smoothing."));
+  p.addParam(RichBool("untangle", d.untangle, "Untangle folded triangles first",
+                      "Noise with a tangential part (a scanner's) folds small triangles over, which no normal filter "
+                      "repairs. When more than 0.75% of the faces point away from those of the noise-adaptive "
+                      "smoothing (HHT: Adaptive Smooth), the denoiser starts from that smoothing."));
+  p.addParam(RichBool("paperStage", d.paper_stage, "Paper's HHT stage",
+                      "Run the paper's divide-and-conquer HHT (sec. 4.3: feature lines as their own signals, the "
+                      "cycle's curvature signal low-passed, Laplacian reconstruction) before the refinement. Off by "
+                      "default: measured, the refinement alone is better on most cases (docs/quality.md)."));
   p.addParam(RichBool("detectFeatures", true, "Preserve sharp features",
                       "Detect sharp features and process them as their own signals (CAD-like models). Off: no feature "
                       "separation, for smooth models such as the paper's torus."));
@@ -35,10 +50,12 @@ void declare(MeshDocument&, RichParameterList& p) {
                      "Feature lines too short for EMD are smoothed by this many passes of a 1D Laplacian instead."));
   p.addParam(RichFloat("lambda", float(d.reconstruction.lambda), "Position weight (lambda)",
                        "Weight of the input positions in the reconstruction, relative to the mean edge length."));
+  p.addParam(RichInt("refineRounds", d.refine_rounds, "Refinement rounds (0 = by the noise)",
+                     "Rounds of guided normal filtering and vertex update; 0 takes one per 12% of noise (at least "
+                     "one)."));
   p.addParam(RichInt("refineNormalPasses", d.refine_normal_passes, "Refinement: normal filtering passes",
-                     "After the HHT reconstruction, clean the face normals by this many passes of guided normal "
-                     "filtering (keeps creases) and fit the vertices to them. 0 gives the paper's method alone; the "
-                     "refinement lowers the normal error well below it (docs/benchmarks.md)."));
+                     "Guided normal filtering passes (which keep creases) per round before the vertices are fitted to "
+                     "the normals. 0: no refinement (with the paper's stage on, the paper's method alone)."));
   p.addParam(RichInt("refineVertexIterations", d.refine_vertex_iterations, "Refinement: vertex update iterations",
                      "Iterations of the vertex update towards the filtered normals (Sun et al. 2007)."));
   p.addParam(RichEnum("showFeatures", ShowNothing,
@@ -79,6 +96,14 @@ bool apply(FilterRun& run) {
   if (!read_triangle_mesh(model.cm, positions, faces, run.error)) return false;
   const RichParameterList& par = run.parameters;
   hht::DenoiseOptions o;
+  o.noise = par.getFloat("noisePercent") / 100.0;
+  o.untangle = par.getBool("untangle");
+  o.paper_stage = par.getBool("paperStage");
+  o.refine_rounds = par.getInt("refineRounds");
+  if (!(o.noise >= 0 && o.noise <= 10) || o.refine_rounds < 0 || o.refine_rounds > 100) {
+    run.error = "Nothing was changed: the noise level must lie in [0, 1000]% and the rounds in [0, 100].";
+    return false;
+  }
   o.detect_features = par.getBool("detectFeatures");
   o.features.angle_degrees = par.getFloat("featureAngle");
   o.features.filter_iterations = std::max(0, par.getInt("normalFilterIterations"));
@@ -113,24 +138,28 @@ bool apply(FilterRun& run) {
     add_feature_layer(run.document, result, report.feature_lines, "Feature lines of " + model.label());
   }
 
+  const double edge = hht::mean_edge_length(positions, faces);
+  run.log(QString("Feature-preserving denoise: noise sigma %1% of the mean edge length %2 (%3)")
+              .arg(100 * report.sigma_used, 0, 'f', 1).arg(edge)
+              .arg(o.noise > 0 ? "given" : "estimated from the finest IMF"));
+  if (o.untangle)
+    run.log(QString("  untangling: %1 faces flipped against the noise-adaptive smoothing; %2")
+                .arg(report.flipped_faces)
+                .arg(report.untangled ? "started from that smoothing" : "started from the input"));
   if (o.detect_features)
-    run.log(QString("Feature-preserving denoise: %1 feature vertices, %2 feature lines (%3 by EMD, %4 by 1D Laplacian), "
-                    "%5 corners")
-                .arg(report.feature_vertices).arg(report.lines).arg(report.lines_by_emd)
-                .arg(report.lines - report.lines_by_emd).arg(report.corners));
-  else
-    run.log("Denoise without feature separation");
-  run.log(QString("  non-feature signal: low-pass at %1 cycles/sample along %2 cycle(s), %3 IMFs on the first; "
-                  "%4 of %5 vertices on it")
-              .arg(o.cutoff).arg(o.cycles).arg(report.imfs.size()).arg(report.cycle.order.size()).arg(positions.rows()));
-  run.log(QString("  reconstruction: lambda %1, %2 CG iterations, relative residual %3")
-              .arg(o.reconstruction.lambda).arg(report.reconstruction.iterations)
-              .arg(report.reconstruction.relative_residual, 0, 'g', 3));
+    run.log(QString("  features: %1 vertices, %2 feature lines, %3 corners")
+                .arg(report.feature_vertices).arg(report.lines).arg(report.corners));
+  if (o.paper_stage) {
+    run.log(QString("  paper's stage: %1 lines by EMD, %2 by 1D Laplacian; low-pass at %3 cycles/sample along %4 "
+                    "cycle(s), %5 IMFs on the first; reconstruction lambda %6, %7 CG iterations")
+                .arg(report.lines_by_emd).arg(report.lines - report.lines_by_emd).arg(o.cutoff).arg(o.cycles)
+                .arg(report.imfs.size()).arg(o.reconstruction.lambda).arg(report.reconstruction.iterations));
+  }
   if (o.refine_normal_passes > 0 && o.refine_vertex_iterations > 0)
-    run.log(QString("  refinement: %1 guided normal filtering passes, %2 vertex update iterations")
-                .arg(o.refine_normal_passes).arg(o.refine_vertex_iterations));
+    run.log(QString("  refinement: %1 round(s) of %2 guided normal filtering passes and %3 vertex update iterations")
+                .arg(report.refine_rounds).arg(o.refine_normal_passes).arg(o.refine_vertex_iterations));
   else
-    run.log("  no refinement (the paper's method alone)");
+    run.log("  no refinement");
   run.log(stage_times_line(report.stages));
   return true;
 }
@@ -139,13 +168,13 @@ bool apply(FilterRun& run) {
 
 FilterSpec denoise_filter() {
   return {"HHT: Feature-Preserving Denoise",
-          "Denoises the mesh while keeping its sharp edges and corners, by the divide-and-conquer HHT of the paper's "
-          "sec. 4.3: sharp features are detected (normal voting with neighbour support, on guided-filtered normals) "
-          "and linked into feature lines; the cycle's curvature signal is sifted with feature vertices never taken as "
-          "extrema and low-pass filtered on instantaneous frequency; every feature line is filtered as its own 1D "
-          "signal (or by a 1D Laplacian when too short); corners of the same type share their mean signal; the mesh is "
-          "rebuilt by the Laplacian least-squares solve. A refinement (not in the paper) then cleans the face normals "
-          "by guided normal filtering and fits the vertices to them. The connectivity is never changed.",
+          "Denoises the mesh while keeping its sharp edges and corners. The noise level is estimated from the finest "
+          "IMF of the one-ring height signal along a Hamiltonian cycle; a mesh whose triangles the noise folded over "
+          "is first untangled by the noise-adaptive smoothing; then face normals are cleaned by guided normal "
+          "filtering (which keeps creases) and the vertices fitted to them, in as many rounds as the noise calls "
+          "for. Optionally the paper's divide-and-conquer HHT (sec. 4.3: feature lines as their own 1D signals, the "
+          "cycle's curvature signal low-passed on instantaneous frequency, Laplacian reconstruction) runs first; "
+          "docs/quality.md measures each part. The connectivity is never changed.",
           MeshFilterInterface::Smoothing,
           MeshFilterInterface::SINGLE_MESH,
           MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL | MeshModel::MM_VERTFLAGSELECT,

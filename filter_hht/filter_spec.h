@@ -39,5 +39,7 @@ FilterSpec add_noise_filter();
 FilterSpec denoise_filter();
 FilterSpec compare_filter();
 FilterSpec bilateral_filter();
+FilterSpec adaptive_smooth_filter();
+FilterSpec guided_denoise_filter();
 
 }  // namespace hht_plugin

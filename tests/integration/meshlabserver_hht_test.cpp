@@ -49,7 +49,7 @@ TEST(MeshlabserverHht, SpectraOfAQualityLeftByAnotherFilter) {
 }
 
 TEST(MeshlabserverHht, GainOneGivesTheMeshBackInTheSavedFile) {
-  const std::string script = chain_scripts("gain_one", {"smooth.mlx"}, {{"gain", "1"}});
+  const std::string script = chain_scripts("gain_one", {"enhance.mlx"}, {{"gain", "1"}});
   TriMesh out, in;
   load(run_meshlabserver(data_mesh("fandisk"), script, "gain_one"), out);
   load_input("fandisk", in);

@@ -1,0 +1,575 @@
+// Scratch lab for the smoothing quality work (issue 7): noisy copies of a clean mesh, several
+// candidate smoothers, E_a / RMS / flips against the clean mesh.
+#include "bench_util.h"
+#include "cycle_decomposition.h"
+#include "denoise_metrics.h"
+#include "gaussian_noise.h"
+#include "mean_curvature.h"
+#include "spectral_mesh_filter.h"
+#include "guided_normal_denoise.h"
+#include "feature_preserving_denoise.h"
+#include "noise_adaptive_smoothing.h"
+#include "normal_vertex_update.h"
+#include "sharp_features.h"
+
+#include <Eigen/SparseCholesky>
+
+#include <cstdio>
+#include <random>
+
+using namespace hht;
+
+namespace {
+
+Positions face_normals(const Positions& p, const Faces& f) {
+  Positions n(f.rows(), 3);
+  for (Eigen::Index i = 0; i < f.rows(); ++i) {
+    Eigen::Vector3d a = p.row(f(i, 0)), b = p.row(f(i, 1)), c = p.row(f(i, 2));
+    Eigen::Vector3d x = (b - a).cross(c - a);
+    double l = x.norm();
+    n.row(i) = l > 0 ? Eigen::Vector3d(x / l) : Eigen::Vector3d::Zero();
+  }
+  return n;
+}
+
+struct Score {
+  double ea, rms;
+  int flips;
+};
+
+Score score(const Positions& v, const Positions& clean, const Faces& f) {
+  const double diag = (clean.colwise().maxCoeff() - clean.colwise().minCoeff()).norm();
+  Positions a = face_normals(v, f), b = face_normals(clean, f);
+  int flips = 0;
+  for (Eigen::Index i = 0; i < f.rows(); ++i) flips += a.row(i).dot(b.row(i)) < 0;
+  return {mean_face_normal_error_degrees(v, clean, f),
+          1e4 * std::sqrt((v - clean).rowwise().squaredNorm().mean()) / diag, flips};
+}
+
+Eigen::SparseMatrix<double> uniform_laplacian(const Faces& f, int n) {
+  std::vector<Eigen::Triplet<double>> t;
+  for (Eigen::Index i = 0; i < f.rows(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      int a = f(i, k), b = f(i, (k + 1) % 3);
+      t.emplace_back(a, b, 1.0);
+      t.emplace_back(b, a, 1.0);
+    }
+  Eigen::SparseMatrix<double> A(n, n);
+  A.setFromTriplets(t.begin(), t.end());
+  for (int k = 0; k < A.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, k); it; ++it) it.valueRef() = 1.0;
+  Eigen::VectorXd deg = A * Eigen::VectorXd::Ones(n);
+  Eigen::SparseMatrix<double> L(n, n);
+  std::vector<Eigen::Triplet<double>> u;
+  for (int k = 0; k < A.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(A, k); it; ++it) u.emplace_back(it.row(), it.col(), -1.0 / deg[it.row()]);
+  for (int i = 0; i < n; ++i) u.emplace_back(i, i, 1.0);
+  L.setFromTriplets(u.begin(), u.end());
+  return L;
+}
+
+Positions taubin(Positions p, const Faces& f, int steps, double lambda, double mu) {
+  Eigen::SparseMatrix<double> L = uniform_laplacian(f, p.rows());
+  for (int s = 0; s < steps; ++s) {
+    p = p - lambda * Positions(L * p);
+    p = p - mu * Positions(L * p);
+  }
+  return p;
+}
+
+// Taubin steps whose tangential part (w.r.t. the current vertex normals) is scaled by tau.
+Positions taubin_damped(Positions p, const Faces& f, int steps, double lambda, double mu, double tau) {
+  Eigen::SparseMatrix<double> L = uniform_laplacian(f, p.rows());
+  std::string err;
+  auto move = [&](double w) {
+    MeanCurvature mc;
+    mean_curvature(p, f, mc, err);
+    Positions d = -w * Positions(L * p);
+    for (Eigen::Index i = 0; i < p.rows(); ++i) {
+      Eigen::RowVector3d nn = mc.normals.row(i);
+      double a = d.row(i).dot(nn);
+      d.row(i) = a * nn + tau * (d.row(i) - a * nn);
+    }
+    p += d;
+  };
+  for (int s = 0; s < steps; ++s) {
+    move(lambda);
+    move(mu);
+  }
+  return p;
+}
+
+std::vector<std::vector<int>> adjacency(const Faces& f, int n) {
+  std::vector<std::vector<int>> a(n);
+  for (Eigen::Index i = 0; i < f.rows(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      a[f(i, k)].push_back(f(i, (k + 1) % 3));
+      a[f(i, (k + 1) % 3)].push_back(f(i, k));
+    }
+  for (auto& v : a) {
+    std::sort(v.begin(), v.end());
+    v.erase(std::unique(v.begin(), v.end()), v.end());
+  }
+  return a;
+}
+
+// Each vertex of `base` moved along base's normal onto a weighted quadric fitted to the
+// `data` positions of its k-ring.
+Positions quadric_projection(const Positions& base, const Positions& data, const Faces& f, int rings, double width) {
+  const int n = base.rows();
+  auto adj = adjacency(f, n);
+  MeanCurvature mb;
+  std::string err;
+  mean_curvature(base, f, mb, err);
+  Positions out = base;
+  std::vector<int> mark(n, -1), ring;
+  for (int i = 0; i < n; ++i) {
+    ring.assign(1, i);
+    mark[i] = i;
+    size_t begin = 0;
+    for (int r = 0; r < rings; ++r) {
+      size_t end = ring.size();
+      for (size_t q = begin; q < end; ++q)
+        for (int j : adj[ring[q]])
+          if (mark[j] != i) { mark[j] = i; ring.push_back(j); }
+      begin = end;
+    }
+    Eigen::Vector3d nn = mb.normals.row(i).transpose();
+    Eigen::Vector3d u = nn.unitOrthogonal(), w = nn.cross(u);
+    Eigen::Vector3d c = base.row(i).transpose();
+    double r2 = 0;
+    for (int j : ring) r2 = std::max(r2, (data.row(j).transpose() - c).squaredNorm());
+    const double s2 = width * width * r2;
+    Eigen::MatrixXd A(ring.size(), 6);
+    Eigen::VectorXd b(ring.size());
+    for (size_t q = 0; q < ring.size(); ++q) {
+      Eigen::Vector3d d = data.row(ring[q]).transpose() - c;
+      double x = d.dot(u), y = d.dot(w), z = d.dot(nn);
+      double wt = std::exp(-d.squaredNorm() / (2 * s2));
+      A.row(q) << wt, wt * x, wt * y, wt * x * x, wt * x * y, wt * y * y;
+      b[q] = wt * z;
+    }
+    if (ring.size() < 10) continue;
+    Eigen::VectorXd coef = A.colPivHouseholderQr().solve(b);
+    out.row(i) += coef[0] * nn.transpose();
+  }
+  return out;
+}
+
+// min ||L x||^2 + sum_i (x_i - v_i)^T W_i (x_i - v_i), W_i = mn^2 n n^T + mt^2 (I - n n^T).
+Positions ls_aniso(const Eigen::SparseMatrix<double>& L, const Positions& v, const Positions& normals, double mn, double mt) {
+  const int n = v.rows();
+  Eigen::SparseMatrix<double> K = L.transpose() * L;
+  std::vector<Eigen::Triplet<double>> t;
+  for (int k = 0; k < K.outerSize(); ++k)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(K, k); it; ++it)
+      for (int c = 0; c < 3; ++c) t.emplace_back(3 * it.row() + c, 3 * it.col() + c, it.value());
+  Eigen::VectorXd b(3 * n);
+  for (int i = 0; i < n; ++i) {
+    Eigen::Vector3d nn = normals.row(i).transpose();
+    Eigen::Matrix3d W = mn * mn * nn * nn.transpose() + mt * mt * (Eigen::Matrix3d::Identity() - nn * nn.transpose());
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) t.emplace_back(3 * i + r, 3 * i + c, W(r, c));
+    b.segment<3>(3 * i) = W * v.row(i).transpose();
+  }
+  Eigen::SparseMatrix<double> A(3 * n, 3 * n);
+  A.setFromTriplets(t.begin(), t.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> s(A);
+  Eigen::VectorXd x = s.solve(b);
+  Positions out(n, 3);
+  for (int i = 0; i < n; ++i) out.row(i) = x.segment<3>(3 * i).transpose();
+  return out;
+}
+
+// Face normals averaged over faces sharing a vertex (area weighted), `passes` times.
+Positions smoothed_face_normals(const Positions& p, const Faces& f, int passes) {
+  const int n = p.rows();
+  Positions fn(f.rows(), 3);
+  Eigen::VectorXd area(f.rows());
+  for (Eigen::Index i = 0; i < f.rows(); ++i) {
+    Eigen::Vector3d a = p.row(f(i, 0)), b = p.row(f(i, 1)), c = p.row(f(i, 2));
+    Eigen::Vector3d x = (b - a).cross(c - a);
+    area[i] = 0.5 * x.norm();
+    fn.row(i) = x.normalized();
+  }
+  std::vector<std::vector<int>> vf(n);
+  for (Eigen::Index i = 0; i < f.rows(); ++i)
+    for (int k = 0; k < 3; ++k) vf[f(i, k)].push_back(i);
+  for (int s = 0; s < passes; ++s) {
+    Positions vn = Positions::Zero(n, 3);
+    for (Eigen::Index i = 0; i < f.rows(); ++i)
+      for (int k = 0; k < 3; ++k) vn.row(f(i, k)) += area[i] * fn.row(i);
+    Positions next(f.rows(), 3);
+    for (Eigen::Index i = 0; i < f.rows(); ++i) {
+      Eigen::RowVector3d acc = Eigen::RowVector3d::Zero();
+      for (int k = 0; k < 3; ++k) acc += vn.row(f(i, k));
+      next.row(i) = acc.normalized();
+    }
+    fn = next;
+  }
+  return fn;
+}
+
+// min ||L x - d||^2 + mu^2 ||x - v||^2
+Positions ls_solve(const Eigen::SparseMatrix<double>& L, const Positions& d, const Positions& v, double mu) {
+  Eigen::SparseMatrix<double> I(L.rows(), L.rows());
+  I.setIdentity();
+  Eigen::SparseMatrix<double> A = Eigen::SparseMatrix<double>(L.transpose() * L) + mu * mu * I;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> s(A);
+  Positions out(v.rows(), 3);
+  for (int k = 0; k < 3; ++k) {
+    Eigen::VectorXd b = L.transpose() * d.col(k) + mu * mu * v.col(k);
+    out.col(k) = s.solve(b);
+  }
+  return out;
+}
+
+// Low-pass (gain 0 above cutoff) of a per-vertex signal, averaged over `cycles` cycles.
+Eigen::VectorXd hht_lowpass(const Eigen::VectorXd& s, const Faces& f, int n, int cycles, double cutoff) {
+  Eigen::VectorXd acc = Eigen::VectorXd::Zero(n);
+  std::string err;
+  for (int k = 0; k < cycles; ++k) {
+    CycleOptions co;
+    co.seed = 7919 * k;
+    HamiltonianCycle c;
+    hamiltonian_cycle(f, n, co, c, err);
+    CycleDecomposition d;
+    decompose_along_cycle(c, s, EmdOptions{}, d, err);
+    compute_spectra(d);
+    acc += filtered_on_vertices(c, d, {cutoff, 0.5, false}, 0.0, f, s);
+  }
+  return acc / cycles;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 3) return 1;
+  Positions clean;
+  Faces f;
+  if (!bench::load_mesh(argv[1], clean, f)) return 1;
+  const double level = std::atof(argv[2]);
+  const int n = clean.rows();
+  const double h = mean_edge_length(clean, f);
+  std::mt19937 rng(11);
+  std::normal_distribution<double> g(0, level * h);
+  Positions noisy = clean;
+  const bool along_normals = argc > 4 && std::string(argv[4]) == "normal";
+  if (along_normals) {
+    noisy = add_gaussian_noise(clean, f, 100 * level, NoiseDirection::Normal, 11);
+  } else {
+    for (int i = 0; i < n; ++i)
+      for (int k = 0; k < 3; ++k) noisy(i, k) += g(rng);
+  }
+  auto show = [&](const char* name, const Positions& p) {
+    Score s = score(p, clean, f);
+    std::printf("  %-28s E_a %6.2f  rms %6.1f  flips %d\n", name, s.ea, s.rms, s.flips);
+  };
+  std::printf("%s n=%d level %.2f\n", argv[1], n, level);
+  {
+    Positions vn = Positions::Zero(n, 3);
+    Positions fn = face_normals(clean, f);
+    for (Eigen::Index i = 0; i < f.rows(); ++i)
+      for (int k = 0; k < 3; ++k) {
+        Eigen::Vector3d a = clean.row(f(i, 0)), b = clean.row(f(i, 1)), c = clean.row(f(i, 2));
+        vn.row(f(i, k)) += (b - a).cross(c - a).transpose();
+      }
+    int folded = 0;
+    for (Eigen::Index i = 0; i < f.rows(); ++i) {
+      Eigen::RowVector3d s = vn.row(f(i, 0)).normalized() + vn.row(f(i, 1)).normalized() + vn.row(f(i, 2)).normalized();
+      folded += fn.row(i).dot(s) < 0;
+    }
+    std::printf("  clean faces folded against their vertex normals: %d\n", folded);
+  }
+  show("noisy", noisy);
+  show("taubin3", taubin(noisy, f, 3, 0.5, -0.53));
+  show("taubin5", taubin(noisy, f, 5, 0.5, -0.53));
+  show("taubin10", taubin(noisy, f, 10, 0.5, -0.53));
+  show("taubin20", taubin(noisy, f, 20, 0.5, -0.53));
+  show("taubin40", taubin(noisy, f, 40, 0.5, -0.53));
+
+  {
+    MeanCurvature mc;
+    std::string err;
+    mean_curvature(clean, f, mc, err);
+    const Positions& nc = mc.normals;
+    auto split = [&](const Positions& p, bool keep_normal) {
+      Positions out = clean;
+      for (int i = 0; i < n; ++i) {
+        Eigen::RowVector3d dlt = p.row(i) - clean.row(i);
+        Eigen::RowVector3d nn = nc.row(i) * dlt.dot(nc.row(i));
+        out.row(i) += keep_normal ? nn : Eigen::RowVector3d(dlt - nn);
+      }
+      return out;
+    };
+    show("O noise normal part", split(noisy, true));
+    show("O noise tangential part", split(noisy, false));
+    Positions t = taubin(noisy, f, 10, 0.5, -0.53);
+    show("O taubin normal part", split(t, true));
+    show("O taubin tangential part", split(t, false));
+  }
+  if (argc > 3 && std::string(argv[3]) == "x") return 0;
+  if (argc > 3 && std::string(argv[3]) == "t") {
+    for (double tau : {0.0, 0.3, 0.6})
+      for (int steps : {3, 5, 10, 20}) {
+        char name[64];
+        std::snprintf(name, sizeof name, "taubin%d tau %.1f", steps, tau);
+        show(name, taubin_damped(noisy, f, steps, 0.5, -0.53, tau));
+      }
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[3]) == "d") {
+    std::string err;
+    Eigen::SparseMatrix<double> L = uniform_laplacian(f, n);
+    for (double tau : {0.5, 0.75, 1.0})
+      for (double kappa : {0.7, 1.0}) {
+        Positions p = noisy;
+        int steps = 0;
+        for (; steps < 60; ++steps) {
+          for (double w : {0.5, -0.53}) {
+            MeanCurvature mc;
+            mean_curvature(p, f, mc, err);
+            Positions d = -w * Positions(L * p);
+            for (int i = 0; i < n; ++i) {
+              Eigen::RowVector3d nn = mc.normals.row(i);
+              double a = d.row(i).dot(nn);
+              d.row(i) = a * nn + tau * (d.row(i) - a * nn);
+            }
+            p += d;
+          }
+          MeanCurvature mc;
+          mean_curvature(p, f, mc, err);
+          double r = 0;
+          for (int i = 0; i < n; ++i) r += std::pow((p.row(i) - noisy.row(i)).dot(mc.normals.row(i)), 2);
+          if (std::sqrt(r / n) >= kappa * level * h) { ++steps; break; }
+        }
+        char name[64];
+        std::snprintf(name, sizeof name, "discrepancy tau %.2f k %.1f (%d)", tau, kappa, steps);
+        show(name, p);
+      }
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[3]) == "q") {
+    for (int nt : {3, 10}) {
+      Positions a = taubin(noisy, f, nt, 0.5, -0.53);
+      for (int rings : {2, 3})
+        for (double width : {0.5, 1.0}) {
+          char name[64];
+          std::snprintf(name, sizeof name, "T%d + quadric r%d w%.1f", nt, rings, width);
+          show(name, quadric_projection(a, noisy, f, rings, width));
+        }
+    }
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[3]) == "n") {
+    for (int nt : {3, 10}) {
+      Positions a = taubin(noisy, f, nt, 0.5, -0.53);
+      for (int passes : {1, 2, 4})
+        for (int it : {5, 20}) {
+          char name[64];
+          std::snprintf(name, sizeof name, "T%d + nrm %d + vu %d", nt, passes, it);
+          show(name, fit_vertices_to_normals(a, f, smoothed_face_normals(a, f, passes), it));
+        }
+    }
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[3]) == "l") {
+    std::string err;
+    const double scale = 1.0 / h;
+    Positions v = noisy * scale;
+    Eigen::SparseMatrix<double> L = uniform_laplacian(f, n);
+    for (double mu : {0.3, 0.4, 0.5, 0.7}) {
+      Positions iso = ls_solve(L, Positions::Zero(n, 3), v, mu);
+      char name[64];
+      std::snprintf(name, sizeof name, "LS0 mu %.2f", mu);
+      show(name, iso / scale);
+      MeanCurvature mc;
+      mean_curvature(iso, f, mc, err);
+      for (double r : {1.5, 2.5}) {
+        std::snprintf(name, sizeof name, "LSA mu %.2f tang x%.1f", mu, r);
+        show(name, ls_aniso(L, v, mc.normals, mu, mu * r) / scale);
+      }
+    }
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[3]) == "a") {
+    std::string err;
+    for (double keep : {0.0})
+      for (double strength : {1.0}) {
+        NoiseAdaptiveSmoothingOptions o;
+        o.strength = strength;
+        Positions out;
+        NoiseAdaptiveSmoothingReport r;
+        if (!noise_adaptive_smooth(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); return 1; }
+        char name[64];
+        std::snprintf(name, sizeof name, "NAS s%.1f k%.1f (%.3f)", strength, keep, r.sigma_used);
+        show(name, out);
+      }
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[3]) == "b") {
+    std::string err;
+    const double scale = 1.0 / h;
+    Positions v = noisy * scale;
+    Eigen::SparseMatrix<double> L = uniform_laplacian(f, n);
+    Eigen::SparseMatrix<double> L2 = L * L;
+    for (double mu : {0.3, 0.4, 0.5, 0.7}) {
+      Positions b2 = ls_solve(L2, Positions::Zero(n, 3), v, mu * mu);
+      char name[64];
+      std::snprintf(name, sizeof name, "BW2 mu %.2f", mu);
+      show(name, b2 / scale);
+      for (double cap : {1.0, 2.0}) {
+        // tangential moves capped at cap * level (in mean edges)
+        MeanCurvature mc;
+        mean_curvature(b2, f, mc, err);
+        Positions out = b2;
+        for (int i = 0; i < n; ++i) {
+          Eigen::RowVector3d d = b2.row(i) - v.row(i);
+          Eigen::RowVector3d nn = mc.normals.row(i);
+          Eigen::RowVector3d t = d - d.dot(nn) * nn;
+          double len = t.norm(), lim = cap * level;
+          if (len > lim) out.row(i) -= t * (1 - lim / len);
+        }
+        std::snprintf(name, sizeof name, "BW2 mu %.2f tcap %.1f", mu, cap);
+        show(name, out / scale);
+      }
+    }
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[3]) == "m") {
+    std::string err;
+    NoiseAdaptiveSmoothingOptions o;
+    Positions out;
+    NoiseAdaptiveSmoothingReport r;
+    noise_adaptive_smooth(noisy, f, o, out, r, err);
+    const double sig = r.sigma_used;
+    show("NAS default", out);
+    for (double kappa : {0.8, 1.0, 1.2}) {
+      double mu = 1.5;
+      Positions best;
+      double removed = 0;
+      for (int it = 0; it < 20; ++it, mu /= 1.15) {
+        o.mu = mu;
+        o.noise = sig;
+        noise_adaptive_smooth(noisy, f, o, out, r, err);
+        MeanCurvature mc;
+        mean_curvature(out, f, mc, err);
+        removed = 0;
+        for (int i = 0; i < n; ++i) removed += std::pow((out.row(i) - noisy.row(i)).dot(mc.normals.row(i)), 2);
+        removed = std::sqrt(removed / n) / h;
+        if (removed >= kappa * sig) break;
+      }
+      char name[64];
+      std::snprintf(name, sizeof name, "discrepancy k%.1f mu %.2f", kappa, mu);
+      show(name, out);
+    }
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[3]) == "g") {
+    std::string err;
+    {
+      HamiltonianCycle c;
+      hamiltonian_cycle(f, n, CycleOptions{}, c, err);
+      NoiseEstimate ne;
+      estimate_noise(noisy, f, c, EmdOptions{}, ne, err);
+      std::printf("  estimated sigma %.3f\n", ne.relative());
+    }
+    for (double sig : {0.25, 0.35})
+    for (int rounds : {1, 2, 3})
+      for (int passes : {4, 8})
+        for (int vit : {20}) {
+          GuidedNormalDenoiseOptions o;
+          o.sigma = sig;
+          o.rounds = rounds;
+          o.normal_passes = passes;
+          o.vertex_iterations = vit;
+          Positions out;
+          guided_normal_denoise(noisy, f, o, out, err);
+          char name[64];
+          std::snprintf(name, sizeof name, "GND s%.2f r%d p%d v%d", sig, rounds, passes, vit);
+          show(name, out);
+        }
+    DenoiseOptions d;
+    d.features.filter_iterations = 8;
+    Positions out;
+    DenoiseReport rep;
+    feature_preserving_denoise(noisy, f, d, out, rep, err);
+    show("denoise.mlx", out);
+    std::printf("  flipped %d of %d, untangled %d, sigma %.3f rounds %d\n", rep.flipped_faces, int(f.rows()), int(rep.untangled), rep.sigma_used, rep.refine_rounds);
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[3]) == "c") {
+    std::string err;
+    for (double strength : {0.3, 1.0}) {
+      NoiseAdaptiveSmoothingOptions o;
+      o.strength = strength;
+      Positions pre;
+      NoiseAdaptiveSmoothingReport r;
+      noise_adaptive_smooth(noisy, f, o, pre, r, err);
+      const int rounds = std::max(1, int(std::lround(r.sigma_used / 0.12)));
+      GuidedNormalDenoiseOptions g;
+      g.sigma = 0.25;
+      g.rounds = rounds;
+      Positions out;
+      guided_normal_denoise(pre, f, g, out, err);
+      char name[64];
+      std::snprintf(name, sizeof name, "NAS s%.1f + GND r%d", strength, rounds);
+      show(name, out);
+      guided_normal_denoise(noisy, f, g, out, err);
+      std::snprintf(name, sizeof name, "GND r%d", rounds);
+      show(name, out);
+    }
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[3]) == "s") {
+    std::string err;
+    for (int nt : {3, 10})
+      for (int nn : {5, 10, 20, 40}) {
+        Positions a = taubin(noisy, f, nt, 0.5, -0.53), b = taubin(noisy, f, nn, 0.5, -0.53);
+        MeanCurvature ma;
+        mean_curvature(a, f, ma, err);
+        Positions out = a;
+        for (int i = 0; i < n; ++i) out.row(i) += ma.normals.row(i) * (b.row(i) - a.row(i)).dot(ma.normals.row(i));
+        char name[64];
+        std::snprintf(name, sizeof name, "tangential T%d normal T%d", nt, nn);
+        show(name, out);
+      }
+    return 0;
+  }
+  {
+    std::string err;
+    for (int steps : {10, 30}) {
+      Positions base = taubin(noisy, f, steps, 0.5, -0.53);
+      MeanCurvature mb;
+      mean_curvature(base, f, mb, err);
+      Eigen::VectorXd hgt(n);
+      for (int i = 0; i < n; ++i) hgt[i] = (noisy.row(i) - base.row(i)).dot(mb.normals.row(i));
+      for (int cycles : {4, 16})
+        for (double cut : {0.02, 0.05, 0.1}) {
+          Eigen::VectorXd hf = hht_lowpass(hgt, f, n, cycles, cut);
+          Positions out = base;
+          for (int i = 0; i < n; ++i) out.row(i) += hf[i] * mb.normals.row(i);
+          char name[64];
+          std::snprintf(name, sizeof name, "base T%d + h cyc %d cut %.2f", steps, cycles, cut);
+          show(name, out);
+        }
+    }
+  }
+  if (argc > 3) return 0;
+  const double scale = 1.0 / h;
+  Positions v = noisy * scale;
+  Eigen::SparseMatrix<double> L = uniform_laplacian(f, n);
+  Positions d = L * v;
+  for (double mu : {0.3, 0.5, 1.0}) {
+    char name[64];
+    std::snprintf(name, sizeof name, "LS0 mu %.2f", mu);
+    show(name, ls_solve(L, Positions::Zero(n, 3), v, mu) / scale);
+    for (double cut : {0.05, 0.1}) {
+      Positions dl(n, 3);
+      for (int k = 0; k < 3; ++k) dl.col(k) = hht_lowpass(d.col(k), f, n, 4, cut);
+      std::snprintf(name, sizeof name, "LSH mu %.2f cut %.2f", mu, cut);
+      show(name, ls_solve(L, dl, v, mu) / scale);
+    }
+  }
+  return 0;
+}

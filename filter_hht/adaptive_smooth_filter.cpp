@@ -1,0 +1,83 @@
+// "HHT: Adaptive Smooth": smoothing whose strength is set by the noise level that the finest
+// IMF of the cycle signal shows (common/noise_adaptive_smoothing.h; ours, not the paper's).
+#include "filter_spec.h"
+#include "hht_parameters.h"
+#include "mesh_adapter.h"
+
+#include "gaussian_noise.h"
+#include "noise_adaptive_smoothing.h"
+
+namespace hht_plugin {
+
+namespace {
+
+void declare(MeshDocument&, RichParameterList& p) {
+  p.addParam(RichFloat("strength", 1.0f, "Strength",
+                       "Multiplies the smoothing the noise estimate calls for: 1 is the measured best on the "
+                       "evaluation corpus (docs/quality.md), above 1 smooths more, below 1 less (0.1 to 10)."));
+  p.addParam(RichFloat("noisePercent", 0.0f, "Noise level (% of mean edge, 0 = estimate)",
+                       "Standard deviation of the noise per coordinate in percent of the mean edge length. 0 "
+                       "estimates it from the finest IMF of the one-ring height signal along a Hamiltonian cycle; "
+                       "give a value only when you know it."));
+  declare_cycle_and_emd_parameters(p);
+}
+
+bool apply(FilterRun& run) {
+  MeshModel& model = *run.document.mm();
+  hht::Positions positions, result;
+  hht::Faces faces;
+  if (!read_triangle_mesh(model.cm, positions, faces, run.error)) return false;
+  const RichParameterList& par = run.parameters;
+  hht::NoiseAdaptiveSmoothingOptions options;
+  options.strength = par.getFloat("strength");
+  options.noise = par.getFloat("noisePercent") / 100.0;
+  options.cycle = cycle_options(par);
+  options.emd = emd_options(par);
+  if (!(options.strength >= 0.1 && options.strength <= 10)) {
+    run.error = "Nothing was changed: the strength must lie in [0.1, 10].";
+    return false;
+  }
+  if (!(options.noise >= 0 && options.noise <= 10)) {
+    run.error = "Nothing was changed: the noise level must lie in [0, 1000] percent of the mean edge.";
+    return false;
+  }
+  hht::NoiseAdaptiveSmoothingReport report;
+  std::string message;
+  auto progress = [&](int percent, const char* stage) { run.report(percent, stage); };
+  if (!hht::noise_adaptive_smooth(positions, faces, options, result, report, message, progress)) {
+    run.error = nothing_changed(message);
+    return false;
+  }
+  move_vertices(model, result);
+  const double edge = hht::mean_edge_length(positions, faces);
+  if (options.noise > 0)
+    run.log(QString("Adaptive smooth: noise given, sigma %1% of the mean edge length %2").arg(100 * options.noise).arg(edge));
+  else
+    run.log(QString("Adaptive smooth: estimated noise sigma %1% of the mean edge length %2 (finest IMF, %3 samples)")
+                .arg(100 * report.sigma_used, 0, 'f', 1).arg(edge).arg(report.noise.samples));
+  run.log(QString("  cut-off mu %1 (strength %2); RMS vertex move %3, largest %4 (x mean edge)")
+              .arg(report.mu, 0, 'f', 3).arg(options.strength)
+              .arg(report.rms_displacement / edge, 0, 'f', 3).arg(report.max_displacement / edge, 0, 'f', 3));
+  run.log(stage_times_line(report.stages));
+  return true;
+}
+
+}  // namespace
+
+FilterSpec adaptive_smooth_filter() {
+  return {"HHT: Adaptive Smooth",
+          "Removes noise with a strength set by the noise itself: the noise level is estimated from the finest IMF "
+          "of the one-ring height signal along a Hamiltonian cycle (Kopsinis and McLaughlin's EMD noise estimate), "
+          "then the mesh is rebuilt by a least-squares solve that keeps mu^4 / (mu^4 + k^4) of each frequency k of the "
+          "uniform Laplacian, mu set by the noise, with tangential slides capped by the noise level. Not the paper's "
+          "method (its curvature filter leaves stripes and keeps the noise's tangential part): see docs/quality.md "
+          "for why and for how it compares with Taubin, HC Laplacian and TwoStep smoothing. A clean mesh is smoothed "
+          "lightly; the connectivity is never changed.",
+          MeshFilterInterface::Smoothing,
+          MeshFilterInterface::SINGLE_MESH,
+          MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL,
+          declare,
+          apply};
+}
+
+}  // namespace hht_plugin

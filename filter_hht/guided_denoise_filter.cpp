@@ -1,0 +1,71 @@
+// "Guided Normal Filtering Denoise": the field's feature-preserving denoiser on its own
+// (common/guided_normal_denoise.h), the baseline the HHT denoiser is measured against.
+#include "filter_spec.h"
+#include "mesh_adapter.h"
+
+#include "guided_normal_denoise.h"
+
+namespace hht_plugin {
+
+namespace {
+
+void declare(MeshDocument&, RichParameterList& p) {
+  const hht::GuidedNormalDenoiseOptions d;
+  p.addParam(RichInt("rounds", d.rounds, "Rounds",
+                     "Rounds of normal filtering and vertex update (1 to 100); heavier noise wants more."));
+  p.addParam(RichInt("normalPasses", d.normal_passes, "Normal filtering passes per round",
+                     "Guided normal filtering passes (0 to 1000) before each vertex update."));
+  p.addParam(RichFloat("sigma", float(d.sigma), "Range width (sigma_r)",
+                       "Width of the range kernel on unit guidance normals (0.05 to 2): smaller keeps weaker creases, "
+                       "larger smooths more (the authors' default 0.35)."));
+  p.addParam(RichInt("vertexIterations", d.vertex_iterations, "Vertex update iterations per round",
+                     "Iterations (0 to 1000) of the vertex update towards the filtered normals (Sun et al. 2007)."));
+}
+
+bool apply(FilterRun& run) {
+  MeshModel& model = *run.document.mm();
+  hht::Positions positions, result;
+  hht::Faces faces;
+  if (!read_triangle_mesh(model.cm, positions, faces, run.error)) return false;
+  hht::GuidedNormalDenoiseOptions o;
+  o.rounds = run.parameters.getInt("rounds");
+  o.normal_passes = run.parameters.getInt("normalPasses");
+  o.sigma = run.parameters.getFloat("sigma");
+  o.vertex_iterations = run.parameters.getInt("vertexIterations");
+  if (o.rounds < 1 || o.rounds > 100 || o.normal_passes < 0 || o.normal_passes > 1000 || !(o.sigma >= 0.05) ||
+      !(o.sigma <= 2) || o.vertex_iterations < 0 || o.vertex_iterations > 1000) {
+    run.error = "Nothing was changed: rounds must lie in [1, 100], passes and iterations in [0, 1000], sigma in "
+                "[0.05, 2].";
+    return false;
+  }
+  Stopwatch clock;
+  run.report(10, "Guided normal filtering and vertex update");
+  std::string message;
+  if (!hht::guided_normal_denoise(positions, faces, o, result, message)) {
+    run.error = nothing_changed(message);
+    return false;
+  }
+  move_vertices(model, result);
+  run.log(QString("Guided normal filtering denoise: %1 round(s) of %2 passes (sigma_r %3) and %4 vertex iterations; "
+                  "%5 s")
+              .arg(o.rounds).arg(o.normal_passes).arg(o.sigma).arg(o.vertex_iterations).arg(clock.seconds(), 0, 'f', 3));
+  return true;
+}
+
+}  // namespace
+
+FilterSpec guided_denoise_filter() {
+  return {"Guided Normal Filtering Denoise",
+          "Feature-preserving denoising by guided mesh normal filtering (<i>Zhang, Deng, Zhang, Bouaziz and Liu</i>, "
+          "<b>Guided mesh normal filtering</b>, Pacific Graphics 2015): face normals are filtered by a joint bilateral "
+          "filter whose range kernel compares guidance normals from the most consistent patch around each face, then "
+          "the vertices are fitted to them (Sun et al. 2007). No HHT: the baseline the HHT denoiser is measured "
+          "against (docs/quality.md).",
+          MeshFilterInterface::Smoothing,
+          MeshFilterInterface::SINGLE_MESH,
+          MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL,
+          declare,
+          apply};
+}
+
+}  // namespace hht_plugin
