@@ -32,7 +32,7 @@ namespace hht {
 // Share of faces flipped against the smoothed mesh above which the denoiser starts from it.
 constexpr double kTangledShare = 0.0075;
 // Noise (sigma / mean edge) per refinement round: rounds = max(1, round(sigma / this)).
-constexpr double kNoisePerRound = 0.12;
+constexpr double kNoisePerRound = 0.1;
 
 struct DenoiseOptions {
   bool paper_stage = false;     // the paper's divide-and-conquer HHT stage before the refinement

@@ -29,8 +29,8 @@ namespace hht {
 
 // Chosen on cow, bull, femur and elephant at 10% and 30% noise, validated on the rest of the
 // corpus (docs/quality.md).
-constexpr double kMuScale = 0.26;
-constexpr double kTangentialCap = 6.0;
+constexpr double kMuScale = 0.233;
+constexpr double kTangentialCap = 7.0;
 
 struct NoiseAdaptiveSmoothingOptions {
   double noise = 0;            // sigma / mean edge length; 0 or less: estimated

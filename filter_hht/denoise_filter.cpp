@@ -51,7 +51,7 @@ void declare(MeshDocument&, RichParameterList& p) {
   p.addParam(RichFloat("lambda", float(d.reconstruction.lambda), "Position weight (lambda)",
                        "Weight of the input positions in the reconstruction, relative to the mean edge length."));
   p.addParam(RichInt("refineRounds", d.refine_rounds, "Refinement rounds (0 = by the noise)",
-                     "Rounds of guided normal filtering and vertex update; 0 takes one per 12% of noise (at least "
+                     "Rounds of guided normal filtering and vertex update; 0 takes one per 10% of noise (at least "
                      "one)."));
   p.addParam(RichInt("refineNormalPasses", d.refine_normal_passes, "Refinement: normal filtering passes",
                      "Guided normal filtering passes (which keep creases) per round before the vertices are fitted to "

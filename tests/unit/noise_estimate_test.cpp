@@ -1,0 +1,96 @@
+#include "gaussian_noise.h"
+#include "noise_estimate.h"
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+namespace hht {
+namespace {
+
+NoiseEstimate estimate(const Positions& p, const Faces& f) {
+  HamiltonianCycle cycle;
+  std::string error;
+  EXPECT_TRUE(hamiltonian_cycle(f, static_cast<int>(p.rows()), {}, cycle, error)) << error;
+  NoiseEstimate out;
+  EXPECT_TRUE(estimate_noise(p, f, cycle, {}, out, error)) << error;
+  return out;
+}
+
+double mad_sigma(std::vector<double> x) {
+  for (double& v : x) v = std::abs(v);
+  std::nth_element(x.begin(), x.begin() + x.size() / 2, x.end());
+  return x[x.size() / 2] / 0.6745;
+}
+
+TEST(NoiseEstimate, FirstImfOfWhiteNoiseHoldsMostOfIt) {
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> gauss(0.0, 2.0);
+  std::vector<double> white(50000);
+  for (double& x : white) x = gauss(rng);
+  EmdOptions o;
+  o.max_imfs = 1;
+  const EmdResult e = emd(white, o);
+  ASSERT_EQ(e.imfs.size(), 1u);
+  EXPECT_NEAR(mad_sigma(e.imfs[0]) / 2.0, 0.95, 0.03);
+}
+
+TEST(NoiseEstimate, RecoversIsotropicAndNormalNoiseOnASphere) {
+  const test::ArrayMesh s = test::sphere(5);
+  // within 6% up to 20% noise; at 30% the noisy normals make it about 10% low
+  for (double level : {0.05, 0.1, 0.2, 0.3}) {
+    const double low = level < 0.25 ? 0.94 : 0.85, high = 1.06;
+    const Positions iso = add_gaussian_noise(s.positions, s.faces, 100 * level, NoiseDirection::Isotropic, 3);
+    const Positions normal = add_gaussian_noise(s.positions, s.faces, 100 * level, NoiseDirection::Normal, 4);
+    for (const Positions* p : {&iso, &normal}) {
+      const double e = estimate(*p, s.faces).relative();
+      EXPECT_GT(e, low * level) << level;
+      EXPECT_LT(e, high * level) << level;
+    }
+  }
+}
+
+TEST(NoiseEstimate, CleanSmoothMeshShowsAlmostNoNoise) {
+  const test::ArrayMesh s = test::sphere(5);
+  EXPECT_LT(estimate(s.positions, s.faces).relative(), 0.01);
+}
+
+TEST(NoiseEstimate, GrowsWithTheNoiseOnAnIrregularScan) {
+  // cow: a coarse irregular mesh whose triangulation shows up as a floor of about 0.07 edges
+  const test::ArrayMesh cow = test::load_data_mesh("cow");
+  double last = estimate(cow.positions, cow.faces).relative();
+  EXPECT_LT(last, 0.08);
+  for (double level : {0.1, 0.2, 0.3}) {
+    const double e = estimate(add_gaussian_noise(cow.positions, cow.faces, 100 * level, NoiseDirection::Isotropic, 9),
+                              cow.faces).relative();
+    EXPECT_GT(e, last);
+    EXPECT_GT(e, 0.8 * level);
+    EXPECT_LT(e, std::hypot(level, 0.08) * 1.05);
+    last = e;
+  }
+}
+
+TEST(NoiseEstimate, IsScaleFree) {
+  const test::ArrayMesh s = test::sphere(4);
+  const Positions noisy = add_gaussian_noise(s.positions, s.faces, 20, NoiseDirection::Isotropic, 1);
+  const NoiseEstimate a = estimate(noisy, s.faces), b = estimate(noisy * 1e4, s.faces);
+  EXPECT_NEAR(a.relative(), b.relative(), 1e-9);
+  EXPECT_NEAR(b.sigma, 1e4 * a.sigma, 1e-6 * b.sigma);
+}
+
+TEST(NoiseEstimate, RefusesBrokenInput) {
+  test::ArrayMesh s = test::sphere(2);
+  HamiltonianCycle cycle;
+  std::string error;
+  ASSERT_TRUE(hamiltonian_cycle(s.faces, s.vertices(), {}, cycle, error));
+  s.positions(3, 1) = std::nan("");
+  NoiseEstimate out;
+  EXPECT_FALSE(estimate_noise(s.positions, s.faces, cycle, {}, out, error));
+  EXPECT_NE(error.find("NaN"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace hht
