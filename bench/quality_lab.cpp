@@ -521,6 +521,18 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "e") {
+    std::string err;
+    SpectralMeshFilterOptions o;
+    o.band = {0.1, 0.5, false};
+    o.gain = 2;
+    o.reconstruction.lambda = 0.1;
+    Positions out;
+    SpectralMeshFilterReport r;
+    spectral_mesh_filter(noisy, f, o, out, r, err);
+    show("enhance.mlx", out);
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "s") {
     std::string err;
     for (int nt : {3, 10})

@@ -1,5 +1,6 @@
 #include "spectral_mesh_filter.h"
 
+#include "flip_guard.h"
 #include "mesh_checks.h"
 
 
@@ -61,6 +62,8 @@ bool spectral_mesh_filter(const Positions& positions, const Faces& faces, const 
   if (!reconstruct_positions(positions, faces, curvature, filtered, options.reconstruction, result, report.reconstruction, error))
     return false;
   clock.done("reconstruction");
+  // Enhancement amplifies the curvature signal where slivers make it erratic: undo the folds.
+  if (!options.keep_coarsest && options.gain > 1) report.restored_vertices = restore_turned_faces(positions, faces, result);
   report.max_displacement = (result - positions).rowwise().norm().maxCoeff();
   step(100, "Done");
   return true;

@@ -33,6 +33,7 @@ struct SpectralMeshFilterReport {
   std::vector<StageTime> stages;
   double signal_change_rms = 0;  // RMS of G~ - G
   double max_displacement = 0;   // largest vertex move
+  int restored_vertices = 0;     // enhancement only: put back where a face would have turned over
 };
 
 using Progress = std::function<void(int percent, const char* stage)>;

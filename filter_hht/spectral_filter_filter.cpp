@@ -116,6 +116,8 @@ bool apply(FilterRun& run) {
               .arg(report.signal_change_rms).arg(options.reconstruction.lambda)
               .arg(par.getBool("literalTarget") ? "literal (normal only)" : "keep-tangential")
               .arg(report.reconstruction.iterations).arg(report.reconstruction.relative_residual, 0, 'g', 3));
+  if (report.restored_vertices > 0)
+    run.log(QString("  %1 vertices put back where the enhancement would have turned faces over").arg(report.restored_vertices));
   run.log(QString("  largest vertex move %1 (%2% of the bounding-box diagonal)")
               .arg(report.max_displacement).arg(100.0 * report.max_displacement / diagonal, 0, 'f', 4));
   run.log(stage_times_line(report.stages));
