@@ -19,7 +19,7 @@ PACKAGES=(
   meshlab lib3ds-1-3 libmuparser2v5 libopenctm1 libqhull-r8.0 libxerces-c3.2t64
   g++ cmake make pkg-config xz-utils qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev
   libglew-dev libeigen3-dev libsuitesparse-dev libfftw3-dev
-  xvfb xauth libgl1-mesa-dri xdotool x11-apps
+  xvfb xauth libgl1-mesa-dri xdotool x11-apps netpbm
 )
 in_root() { "$ROOT/scripts/in_debian13.sh" "$@"; }
 skip() { echo "[meshlab2022] SKIPPED: $*" >&2; exit 3; }
