@@ -56,7 +56,8 @@ const char* kUsage =
     "  -o OUT         save the current layer after the script (format from the extension)\n"
     "  -m FLAGS       what OUT also keeps: vc vq vn vt vf fc fq fn ff wt (vertex/face colour, quality, ...)\n"
     "  -s SCRIPT      a MeshLab filter script; every filter must list all of its parameters\n"
-    "  -p PLUGIN      load one more plugin file (e.g. a freshly built libfilter_hht.so)\n"
+    "  -p PLUGIN      load this plugin file (e.g. a freshly built libfilter_hht.so) instead of an\n"
+    "                 installed one of the same file name\n"
     "  --plugin-dir   the installed plugins (default " MESHLAB_SYSTEM_PLUGIN_DIR ")\n"
     "  --list-filters print the name of every filter loaded and exit\n"
     "Exit status: 0 on success, 1 when a filter fails (nothing is saved), 2 on bad usage or I/O.\n";
@@ -167,10 +168,17 @@ int main(int argc, char** argv) {
   }
 
   PluginManager& plugins = meshlab::pluginManagerInstance();
-  try {
-    plugins.loadPlugins(QDir(options.plugin_dir));
-  } catch (const MLException& e) {  // the others are loaded: say which failed, go on
-    std::fprintf(stderr, "meshlabserver2022: warning: %s", e.what());
+  // An installed copy of a plugin given with -p must not shadow it (same filter names).
+  QStringList given;
+  for (const QString& file : options.plugins) given << QFileInfo(file).fileName();
+  for (const QFileInfo& file : QDir(options.plugin_dir).entryInfoList({"*.so"}, QDir::Files)) {
+    if (given.contains(file.fileName())) continue;
+    try {
+      plugins.loadPlugin(file.absoluteFilePath());
+    } catch (const MLException& e) {  // the others still load: say which failed, go on
+      std::fprintf(stderr, "meshlabserver2022: warning: plugin %s not loaded: %s\n", qUtf8Printable(file.fileName()),
+                   e.what());
+    }
   }
   for (const QString& file : options.plugins) {
     try {
