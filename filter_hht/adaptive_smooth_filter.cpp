@@ -11,7 +11,7 @@ namespace hht_plugin {
 
 namespace {
 
-void declare(MeshDocument&, RichParameterList& p) {
+void declare(const MeshDocument&, RichParameterList& p) {
   p.addParam(RichFloat("strength", 1.0f, "Strength",
                        "Multiplies the smoothing the noise estimate calls for: 1 is the measured best on the "
                        "evaluation corpus (docs/quality.md), above 1 smooths more, below 1 less (0.1 to 10)."));
@@ -73,8 +73,8 @@ FilterSpec adaptive_smooth_filter() {
           "method (its curvature filter leaves stripes and keeps the noise's tangential part): see docs/quality.md "
           "for why and for how it compares with Taubin, HC Laplacian and TwoStep smoothing. A clean mesh is smoothed "
           "lightly; the connectivity is never changed.",
-          MeshFilterInterface::Smoothing,
-          MeshFilterInterface::SINGLE_MESH,
+          MeshLabFilter::Smoothing,
+          MeshLabFilter::SINGLE_MESH,
           MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL,
           declare,
           apply};

@@ -8,7 +8,7 @@ namespace hht_plugin {
 
 namespace {
 
-void declare(MeshDocument&, RichParameterList& p) {
+void declare(const MeshDocument&, RichParameterList& p) {
   p.addParam(RichFloat("sigmaPercent", 10.0f, "Sigma (% of mean edge length)",
                        "Standard deviation of the displacement, in percent of the mesh's mean edge length (the paper "
                        "uses 5% for Fandisk, 10% for the cube and the torus)."));
@@ -54,8 +54,8 @@ FilterSpec add_noise_filter() {
           "Adds the noise model of the paper's experiments: every vertex moves by a Gaussian amount with standard "
           "deviation sigma, given in percent of the mean edge length, along a uniformly random direction or along its "
           "normal. The seed makes it reproducible.",
-          MeshFilterInterface::Smoothing,
-          MeshFilterInterface::SINGLE_MESH,
+          MeshLabFilter::Smoothing,
+          MeshLabFilter::SINGLE_MESH,
           MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL,
           declare,
           apply};

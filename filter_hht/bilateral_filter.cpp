@@ -8,7 +8,7 @@ namespace hht_plugin {
 
 namespace {
 
-void declare(MeshDocument&, RichParameterList& p) {
+void declare(const MeshDocument&, RichParameterList& p) {
   const hht::BilateralOptions d;
   p.addParam(RichFloat("sigmaC", float(d.sigma_c), "sigma_c (x mean edge length)",
                        "Closeness width, in mean edge lengths; neighbours within 2 sigma_c take part (paper: 0.4)."));
@@ -46,8 +46,8 @@ FilterSpec bilateral_filter() {
           "Bilateral mesh denoising of <i>Fleishman, Drori and Cohen-Or</i>, <b>Bilateral mesh denoising</b>, ACM TOG "
           "22(3), 2003: each vertex moves along its normal by a bilateral average of its neighbours' offsets, with a "
           "closeness width sigma_c and a feature width sigma_s, both in mean edge lengths. The paper's competitor.",
-          MeshFilterInterface::Smoothing,
-          MeshFilterInterface::SINGLE_MESH,
+          MeshLabFilter::Smoothing,
+          MeshLabFilter::SINGLE_MESH,
           MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL,
           declare,
           apply};

@@ -8,11 +8,11 @@ namespace hht_plugin {
 
 namespace {
 
-void declare(MeshDocument& document, RichParameterList& p) {
-  MeshModel* reference = document.mm();
-  for (MeshModel* m : document.meshList)
+void declare(const MeshDocument& document, RichParameterList& p) {
+  const MeshModel* reference = document.mm();
+  for (const MeshModel* m : layers(document))
     if (m != document.mm()) reference = m;  // another layer, when there is one
-  p.addParam(RichMesh("reference", reference, &document, "Reference (ground truth)",
+  p.addParam(mesh_parameter("reference", reference, document, "Reference (ground truth)",
                       "The noise-free mesh, with the same vertices and faces in the same order as the current layer."));
   p.addParam(RichEnum("perVertex", 0, QStringList{"Distance to the reference surface", "Normal error (degrees)"},
                       "Per-vertex error into quality",
@@ -22,7 +22,7 @@ void declare(MeshDocument& document, RichParameterList& p) {
 
 bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
-  MeshModel* reference = run.parameters.getMesh("reference");
+  MeshModel* reference = chosen_mesh(run.parameters, "reference", run.document);
   if (!reference) {
     run.error = "Nothing was changed: choose a reference layer.";
     return false;
@@ -65,8 +65,8 @@ FilterSpec compare_filter() {
           "<br><b>E_v</b>: mean over the result's vertices of the distance to the reference surface (closest point on "
           "any reference triangle), divided by the reference's bounding-box diagonal.<br>"
           "Writes a per-vertex error into quality for a colour map.",
-          MeshFilterInterface::Measure,
-          MeshFilterInterface::FIXED,
+          MeshLabFilter::Measure,
+          MeshLabFilter::FIXED,
           MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR,
           declare,
           apply};

@@ -8,7 +8,7 @@ namespace hht_plugin {
 
 namespace {
 
-void declare(MeshDocument&, RichParameterList& p) {
+void declare(const MeshDocument&, RichParameterList& p) {
   p.addParam(RichFloat("rampPercentile", 2.0f, "Colour ramp clipping (%)",
                        "The colour ramp spans the values between this percentile and its complement "
                        "(2 -> 2nd to 98th percentile), so a few extreme vertices do not flatten it."));
@@ -48,9 +48,9 @@ FilterSpec curvature_signal_filter() {
           "<b>Convention: G = 2H</b>, twice the mean curvature: 2/r on a sphere of radius r with outward normals, "
           "negative in concave regions. It is the same quantity the reconstruction of the HHT filters uses.<br>"
           "Written into vertex quality and shown as a colour ramp over a robust percentile range.",
-          MeshFilterInterface::FilterClass(MeshFilterInterface::Quality | MeshFilterInterface::VertexColoring |
-                                           MeshFilterInterface::Normal),
-          MeshFilterInterface::SINGLE_MESH,
+          MeshLabFilter::FilterClass(MeshLabFilter::Quality | MeshLabFilter::VertexColoring |
+                                           MeshLabFilter::Normal),
+          MeshLabFilter::SINGLE_MESH,
           MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR,
           declare,
           apply};

@@ -16,7 +16,7 @@ namespace {
 
 enum Show { ShowNothing, SelectFeatureVertices, FeatureLineLayer };
 
-void declare(MeshDocument&, RichParameterList& p) {
+void declare(const MeshDocument&, RichParameterList& p) {
   const hht::DenoiseOptions d;
   p.addParam(RichFloat("noisePercent", 0.0f, "Noise level (% of mean edge, 0 = estimate)",
                        "Standard deviation of the noise in percent of the mean edge length. 0 estimates it from the "
@@ -86,7 +86,7 @@ void add_feature_layer(MeshDocument& document, const hht::Positions& positions, 
       ei->V(1) = &m.vert[first + (i + 1) % line.size()];
     }
   }
-  layer->UpdateBoxAndNormals();
+  update_box_and_normals(*layer);
 }
 
 bool apply(FilterRun& run) {
@@ -175,8 +175,8 @@ FilterSpec denoise_filter() {
           "for. Optionally the paper's divide-and-conquer HHT (sec. 4.3: feature lines as their own 1D signals, the "
           "cycle's curvature signal low-passed on instantaneous frequency, Laplacian reconstruction) runs first; "
           "docs/quality.md measures each part. The connectivity is never changed.",
-          MeshFilterInterface::Smoothing,
-          MeshFilterInterface::SINGLE_MESH,
+          MeshLabFilter::Smoothing,
+          MeshLabFilter::SINGLE_MESH,
           MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL | MeshModel::MM_VERTFLAGSELECT,
           declare,
           apply};

@@ -1,10 +1,12 @@
 // What each filter of the plugin declares: its name, description, menu class, parameters
-// and the function that applies it. The plugin class only dispatches over these.
+// and the function that applies it, in terms that hold for either MeshLab (meshlab_api.h).
+// The plugin class (meshlab2020/ or meshlab2022/) only dispatches over these.
 #pragma once
 
-#include <common/interfaces.h>
+#include "meshlab_api.h"
 
 #include <functional>
+#include <vector>
 
 namespace hht_plugin {
 
@@ -23,12 +25,15 @@ struct FilterRun {
 struct FilterSpec {
   QString name;
   QString info;
-  MeshFilterInterface::FilterClass menu_class;
-  MeshFilterInterface::FILTER_ARITY arity;
+  MeshLabFilter::FilterClass menu_class;
+  FilterArity arity;
   int post_condition;  // MeshModel::MM_* bits the filter changes
-  std::function<void(MeshDocument&, RichParameterList&)> declare_parameters;
+  std::function<void(const MeshDocument&, RichParameterList&)> declare_parameters;
   std::function<bool(FilterRun&)> apply;
 };
+
+// Every filter of the plugin, in menu order (filter_spec.cpp).
+std::vector<FilterSpec> all_filters();
 
 // One per filter, each in its own file.
 FilterSpec hamiltonian_cycle_filter();

@@ -9,7 +9,7 @@ namespace hht_plugin {
 
 namespace {
 
-void declare(MeshDocument&, RichParameterList& p) {
+void declare(const MeshDocument&, RichParameterList& p) {
   const hht::GuidedNormalDenoiseOptions d;
   p.addParam(RichInt("rounds", d.rounds, "Rounds",
                      "Rounds of normal filtering and vertex update (1 to 100); heavier noise wants more."));
@@ -61,8 +61,8 @@ FilterSpec guided_denoise_filter() {
           "filter whose range kernel compares guidance normals from the most consistent patch around each face, then "
           "the vertices are fitted to them (Sun et al. 2007). No HHT: the baseline the HHT denoiser is measured "
           "against (docs/quality.md).",
-          MeshFilterInterface::Smoothing,
-          MeshFilterInterface::SINGLE_MESH,
+          MeshLabFilter::Smoothing,
+          MeshLabFilter::SINGLE_MESH,
           MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL,
           declare,
           apply};

@@ -11,7 +11,7 @@ namespace hht_plugin {
 
 namespace {
 
-void declare(MeshDocument&, RichParameterList& p) {
+void declare(const MeshDocument&, RichParameterList& p) {
   p.addParam(RichInt("seed", 0, "Seed",
                      "Where the ring starts growing: 0 takes each component's first face, any other "
                      "value a random face drawn from this seed. Different seeds give different cycles."));
@@ -44,7 +44,7 @@ void add_cycle_layer(MeshDocument& document, const CMeshO& source, const hht::Ha
       edge.V(1) = &m.vert[i + 1 < e ? i + 1 : b];
     }
   }
-  layer->UpdateBoxAndNormals();
+  update_box_and_normals(*layer);
 }
 
 bool apply(FilterRun& run) {
@@ -107,8 +107,8 @@ FilterSpec hamiltonian_cycle_filter() {
           "and the mesh is coloured by it. Consecutive vertices on the cycle are always joined by a mesh edge. "
           "Holes are closed by a dummy vertex per boundary loop (the mesh itself is not changed); each connected "
           "component gets its own cycle. Non-manifold meshes are refused with a message.",
-          MeshFilterInterface::FilterClass(MeshFilterInterface::Quality | MeshFilterInterface::VertexColoring),
-          MeshFilterInterface::SINGLE_MESH,
+          MeshLabFilter::FilterClass(MeshLabFilter::Quality | MeshLabFilter::VertexColoring),
+          MeshLabFilter::SINGLE_MESH,
           MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR,
           declare,
           apply};

@@ -5,7 +5,7 @@
 #include "emd.h"
 #include "hamiltonian_cycle.h"
 
-#include <common/filter_parameter/rich_parameter_list.h>
+#include "meshlab_api.h"
 
 namespace hht_plugin {
 

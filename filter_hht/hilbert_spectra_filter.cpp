@@ -17,7 +17,7 @@ const hht::CycleQuantity kOutputs[] = {hht::CycleQuantity::Imf, hht::CycleQuanti
                                        hht::CycleQuantity::Frequency, hht::CycleQuantity::Phase,
                                        hht::CycleQuantity::Residue};
 
-void declare(MeshDocument&, RichParameterList& p) {
+void declare(const MeshDocument&, RichParameterList& p) {
   p.addParam(RichEnum("source", CurvatureSignal, QStringList{"Curvature signal (G = 2H)", "Current vertex quality"},
                       "Signal to analyse",
                       "The per-vertex signal to decompose: the paper's curvature signal G = <L V, n>, or "
@@ -142,8 +142,8 @@ FilterSpec hilbert_spectra_filter() {
           "CSV. Frequencies are in cycles per sample along the cycle (0 to 0.5). Where an IMF's amplitude is "
           "below 1e-3 of its RMS, or its phase steps backwards, its frequency is taken as the IMF's "
           "amplitude-weighted mean frequency.",
-          MeshFilterInterface::FilterClass(MeshFilterInterface::Quality | MeshFilterInterface::VertexColoring),
-          MeshFilterInterface::SINGLE_MESH,
+          MeshLabFilter::FilterClass(MeshLabFilter::Quality | MeshLabFilter::VertexColoring),
+          MeshLabFilter::SINGLE_MESH,
           MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR,
           declare,
           apply};

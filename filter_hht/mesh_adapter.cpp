@@ -23,7 +23,7 @@ QString nothing_changed(const std::string& why) {
 
 void move_vertices(MeshModel& model, const hht::Positions& positions) {
   hht::set_vertex_positions(model.cm, positions);
-  model.UpdateBoxAndNormals();
+  update_box_and_normals(model);
 }
 
 std::pair<double, double> show_as_quality(MeshModel& model, const Eigen::VectorXd& values, double percent) {

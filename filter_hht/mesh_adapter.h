@@ -6,7 +6,7 @@
 #include "mesh_arrays.h"
 #include "stage_clock.h"
 
-#include <common/meshmodel.h>
+#include "meshlab_api.h"
 
 #include <Eigen/Core>
 

@@ -12,7 +12,7 @@ namespace {
 
 enum Band { HighFrequencies, LowFrequencies, InsideBand, OutsideBand };
 
-void declare(MeshDocument&, RichParameterList& p) {
+void declare(const MeshDocument&, RichParameterList& p) {
   p.addParam(RichEnum("band", HighFrequencies,
                       QStringList{"High frequencies (above cut-off)", "Low frequencies (below cut-off)",
                                   "Inside [low, high]", "Outside [low, high]"},
@@ -134,8 +134,8 @@ FilterSpec spectral_filter_filter() {
           "G~ by the Laplacian least-squares solve of eq. 9-11.<br>"
           "Gain 0 on high frequencies smooths, gain above 1 enhances detail, gain 1 returns the mesh unchanged. The "
           "connectivity is never changed.",
-          MeshFilterInterface::Smoothing,
-          MeshFilterInterface::SINGLE_MESH,
+          MeshLabFilter::Smoothing,
+          MeshLabFilter::SINGLE_MESH,
           MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL,
           declare,
           apply};

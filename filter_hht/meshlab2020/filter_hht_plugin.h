@@ -1,11 +1,10 @@
-// filter_hht: Empirical Mode Decomposition and Hilbert spectra on triangle meshes, after
-// "Efficient EMD and Hilbert spectra computation for 3D geometry processing and analysis via
-// space-filling curve" (The Visual Computer, 2015). The algorithms live in common/.
+// filter_hht for MeshLab 2020.09 (MeshFilterInterface): the plugin class, which only
+// dispatches over the filter table (../filter_spec.h). Empirical Mode Decomposition and
+// Hilbert spectra on triangle meshes, after "Efficient EMD and Hilbert spectra computation for
+// 3D geometry processing and analysis via space-filling curve" (The Visual Computer, 2015).
 #pragma once
 
 #include "filter_spec.h"
-
-#include <common/interfaces.h>
 
 #include <vector>
 

@@ -1,13 +1,8 @@
-#include "filter_hht.h"
+#include "filter_hht_plugin.h"
 
 #include <exception>
 
-FilterHhtPlugin::FilterHhtPlugin()
-    : filters_{hht_plugin::hamiltonian_cycle_filter(), hht_plugin::curvature_signal_filter(),
-               hht_plugin::hilbert_spectra_filter(), hht_plugin::spectral_filter_filter(),
-               hht_plugin::add_noise_filter(), hht_plugin::denoise_filter(), hht_plugin::compare_filter(),
-               hht_plugin::bilateral_filter(), hht_plugin::adaptive_smooth_filter(),
-               hht_plugin::guided_denoise_filter()} {
+FilterHhtPlugin::FilterHhtPlugin() : filters_(hht_plugin::all_filters()) {
   for (int id = 0; id < static_cast<int>(filters_.size()); ++id) typeList << id;
   for (FilterIDType id : types()) actionList << new QAction(filterName(id), this);
 }
