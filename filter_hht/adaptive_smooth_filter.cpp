@@ -55,8 +55,9 @@ bool apply(FilterRun& run) {
   else
     run.log(QString("Adaptive smooth: estimated noise sigma %1% of the mean edge length %2 (finest IMF, %3 samples)")
                 .arg(100 * report.sigma_used, 0, 'f', 1).arg(edge).arg(report.noise.samples));
-  run.log(QString("  cut-off mu %1 (strength %2); RMS vertex move %3, largest %4 (x mean edge)")
-              .arg(report.mu, 0, 'f', 3).arg(options.strength)
+  run.log(QString("  cut-off mu %1 (strength %2), %3 conjugate gradient iterations; RMS vertex move %4, largest %5 "
+                  "(x mean edge)")
+              .arg(report.mu, 0, 'f', 3).arg(options.strength).arg(report.iterations)
               .arg(report.rms_displacement / edge, 0, 'f', 3).arg(report.max_displacement / edge, 0, 'f', 3));
   run.log(stage_times_line(report.stages));
   return true;

@@ -4,6 +4,7 @@
 #include "test_meshes.h"
 #include "uniform_laplacian.h"
 
+#include <Eigen/SparseCholesky>
 #include <gtest/gtest.h>
 
 namespace hht {
@@ -45,6 +46,35 @@ TEST(NoiseAdaptiveSmoothing, BeatsTaubinOnAnIrregularOrganicMesh) {
       EXPECT_LT(rms(ours, m.positions), rms(reference, m.positions)) << name << " " << level;
       EXPECT_LT(rms(ours, m.positions), 1.05 * rms(noisy, m.positions)) << name << " " << level;
     }
+}
+
+// The iterative solve against a direct one of the documented system: with a given noise so large
+// that no tangential cap applies, the result is the solution of
+// ((L^2)^T L^2 + mu^4) x = mu^4 v, mu = kMuScale / sqrt(sigma), in unit mean edge lengths.
+TEST(NoiseAdaptiveSmoothing, SolvesTheDocumentedSystem) {
+  const test::ArrayMesh s = test::sphere(3);
+  const Positions noisy = add_gaussian_noise(s.positions, s.faces, 20, NoiseDirection::Isotropic, 5);
+  NoiseAdaptiveSmoothingOptions o;
+  o.noise = 3.0;
+  NoiseAdaptiveSmoothingReport report;
+  const Positions ours = smooth(noisy, s.faces, o, &report);
+  EXPECT_NEAR(report.mu, kMuScale / std::sqrt(3.0), 1e-12);
+  EXPECT_GT(report.iterations, 0);
+  EXPECT_LE(report.relative_residual, kSmoothingTolerance);
+  EXPECT_EQ(report.unfolded_vertices, 0);
+
+  const double edge = mean_edge_length(noisy, s.faces);
+  const Eigen::RowVector3d centre = noisy.colwise().mean();
+  const Positions v = (noisy.rowwise() - centre) / edge;
+  const Eigen::SparseMatrix<double> l = uniform_laplacian(vertex_neighbours(s.faces, s.vertices()));
+  const Eigen::SparseMatrix<double> l2 = l * l;
+  Eigen::SparseMatrix<double> a = Eigen::SparseMatrix<double>(l2.transpose()) * l2;
+  const double mu4 = std::pow(report.mu, 4);
+  for (int i = 0; i < s.vertices(); ++i) a.coeffRef(i, i) += mu4;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> direct(a);
+  const Positions expected = (Positions(direct.solve(Positions(mu4 * v))) * edge).rowwise() + centre;
+  EXPECT_LT((ours - expected).cwiseAbs().maxCoeff(), 1e-6 * edge);
+  EXPECT_GT((ours - noisy).cwiseAbs().maxCoeff(), 0.1 * edge);  // and it did smooth
 }
 
 TEST(NoiseAdaptiveSmoothing, MoreNoiseMeansALowerCutOff) {
