@@ -3,10 +3,12 @@
 // short and takes the 1D Laplacian instead, so this needs a mesh with long creases: a long box.
 #include "feature_preserving_denoise.h"
 #include "gaussian_noise.h"
+#include "mean_curvature.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 #include <tuple>
 
@@ -69,6 +71,38 @@ TEST(FeatureLineSignals, LongCreasesAreDecomposedByEmd) {
   EXPECT_EQ(report.lines, 12);
   // the four long edges (159 vertices between their corners) by EMD, the eight short ones not
   EXPECT_EQ(report.lines_by_emd, 4);
+}
+
+// Each long crease's signal is low-pass filtered along the line: with the refinement off (the
+// paper's method alone, which rebuilds the mesh from the filtered signal), G read along the
+// long creases of the result is much smoother than on the noisy input. Roughness: RMS of the
+// second difference of G along each line, over the RMS of G there.
+TEST(FeatureLineSignals, LongCreaseSignalsAreLowPassFiltered) {
+  const test::ArrayMesh m = box(6, 6, 160);
+  const Positions noisy = add_gaussian_noise(m.positions, m.faces, 10.0, NoiseDirection::Random, 3);
+  DenoiseOptions o;
+  o.refine_normal_passes = 0;
+  Positions result;
+  DenoiseReport report;
+  std::string error;
+  ASSERT_TRUE(feature_preserving_denoise(noisy, m.faces, o, result, report, error)) << error;
+  auto roughness = [&](const Positions& p) {
+    MeanCurvature h;
+    std::string message;
+    EXPECT_TRUE(mean_curvature(p, m.faces, h, message)) << message;
+    double second = 0, level = 0;
+    for (const auto& line : report.feature_lines.lines) {
+      if (line.size() < 100) continue;  // the long creases
+      for (size_t i = 1; i + 1 < line.size(); ++i) {
+        const double d = h.signal[line[i - 1]] - 2 * h.signal[line[i]] + h.signal[line[i + 1]];
+        second += d * d;
+        level += h.signal[line[i]] * h.signal[line[i]];
+      }
+    }
+    return std::sqrt(second / level);
+  };
+  // measured 0.336 -> 0.145; with the lines' signals left unfiltered 0.336 -> 0.315
+  EXPECT_LT(roughness(result), 0.5 * roughness(noisy));
 }
 
 }  // namespace
