@@ -97,7 +97,7 @@ TEST_P(IndependentSolve, CurvatureSignalAgrees) {
   const Positions lv = lap.l * m.positions;
   const Eigen::VectorXd g = (lv.array() * lap.normals.array()).rowwise().sum();
   const Eigen::VectorXd library = signal_of(m);
-  EXPECT_LT((g - library).cwiseAbs().maxCoeff(), 1e-9 * library.cwiseAbs().maxCoeff());
+  EXPECT_LT((g - library).cwiseAbs().maxCoeff(), 1e-11 * library.cwiseAbs().maxCoeff());  // measured 3e-14 to 7e-13
 }
 
 // A changed signal rebuilt by the library (CG) against the normal equations of
@@ -128,7 +128,7 @@ TEST_P(IndependentSolve, ChangedSignalMatchesADirectSolveWithThePlainLaplacian) 
   const Positions expected = solver.solve(Positions(lap.l.transpose() * target + mu2 * m.positions));
   const double moved = max_displacement(expected, m.positions);
   EXPECT_GT(moved, 5e-4 * diagonal(m.positions)) << "the change must move the mesh";
-  EXPECT_LT(max_displacement(s.positions, expected), 1e-5 * moved);
+  EXPECT_LT(max_displacement(s.positions, expected), 1e-7 * moved);  // measured 1.2e-9 to 6.7e-9
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, IndependentSolve, ::testing::Values("fandisk", "sphere5", "elephant-with-holes"));
@@ -146,14 +146,14 @@ TEST(Reconstruction, LiteralNormalTargetDriftsTangentially) {
 }
 
 // README: "14-17 iterations to a 1e-10 relative residual" (docs/benchmarks.md: G halved,
-// lambda 0.01; 14 on Fandisk, 16 on armadillo).
+// lambda 0.01; 14 on Fandisk, 16 on armadillo; measured the same here).
 TEST(Reconstruction, ConjugateGradientsTakeTheDocumentedIterations) {
   for (const char* name : {"fandisk", "armadillo"}) {
     SCOPED_TRACE(name);
     const test::ArrayMesh m = test::load_data_mesh(name);
     const Solved s = solve(m, 0.5 * signal_of(m));
-    EXPECT_GE(s.report.iterations, 12);
-    EXPECT_LE(s.report.iterations, 18);
+    EXPECT_GE(s.report.iterations, 13);
+    EXPECT_LE(s.report.iterations, 17);
     EXPECT_LE(s.report.relative_residual, 1e-10);
     EXPECT_GT(s.report.relative_residual, 1e-14);  // stopped at the tolerance, not run to the end
   }

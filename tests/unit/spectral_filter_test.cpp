@@ -89,8 +89,9 @@ TEST(SpectralFilter, EveryBandWithNonUnitGains) {
       };
       const std::vector<double> expected = sum({scaled(kFast, c.fast), scaled(kMiddle, c.middle), scaled(kSlow, c.slow)});
       const std::vector<double> out = hht::filter_by_frequency(d.emd, d.spectra, c.band, gain);
-      // EMD's separation error on these tones (up to 6e-4), times the largest weight
-      EXPECT_LT(max_abs_diff(out, expected), 2e-3 * std::max(1.0, gain));
+      // EMD's separation error on these tones times the largest weight: measured 6.2e-4 at
+      // gain 0, 1.25e-3 at gain 3
+      EXPECT_LT(max_abs_diff(out, expected), 1e-3 * std::max(1.0, gain));
     }
   }
 }
