@@ -384,7 +384,7 @@ TEST(MeshlabserverParameters, DenoiseOptions) {
   };
   const Case cases[] = {
       {"features", {{"featureAngle", "40"}, {"normalFilterIterations", "2"}, {"shortLinePasses", "3"}, {"cycles", "2"},
-                    {"cutoff", "0.08"}, {"lambda", "0.5"}, {"refineNormalPasses", "0"}},
+                    {"cutoff", "0.08"}, {"lambda", "0.5"}, {"refineNormalPasses", "0"}, {"showFeatures", "1"}},
        [](DenoiseOptions& o) {
          o.features.angle_degrees = f(40);
          o.features.filter_iterations = 2;
@@ -415,6 +415,16 @@ TEST(MeshlabserverParameters, DenoiseOptions) {
     ASSERT_TRUE(feature_preserving_denoise(noisy, in.faces, o, expected, report, error)) << error;
     const ServerRun run = run_script(input, "denoise.mlx", c.overrides, "denoise_" + c.tag);
     expect_positions(saved_positions(run), expected, in.diagonal, c.tag);
+    if (c.tag == "features") {  // showFeatures 1: the feature vertices are selected
+      TriMesh saved;
+      load(run, saved);
+      int selected = 0;
+      for (int v = 0; v < saved.vn; ++v) {
+        EXPECT_EQ(saved.vert[v].IsS(), report.type[v] != FeatureType::None) << v;
+        selected += saved.vert[v].IsS();
+      }
+      EXPECT_EQ(selected, report.feature_vertices);
+    }
     if (o.detect_features) {
       EXPECT_NE(run.log.find(std::to_string(report.feature_vertices) + " feature vertices"), std::string::npos) << run.log;
     }
