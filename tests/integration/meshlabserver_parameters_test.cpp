@@ -270,17 +270,17 @@ TEST(MeshlabserverParameters, HistogramFileAndBins) {
 
 struct FilterCase {
   std::string tag;
-  std::vector<std::pair<std::string, std::string>> overrides;  // applied to smooth.mlx
+  std::vector<std::pair<std::string, std::string>> overrides;  // applied to enhance.mlx
   SpectralMeshFilterOptions options;                            // the same, for the library
 };
 
 void PrintTo(const FilterCase& c, std::ostream* os) { *os << c.tag; }
 
-SpectralMeshFilterOptions smooth_script_options() {  // resources/smooth.mlx
+SpectralMeshFilterOptions enhance_script_options() {  // resources/enhance.mlx
   SpectralMeshFilterOptions o;
-  o.band = {f(0.05), 0.5, false};
-  o.gain = 0;
-  o.cycles = 4;
+  o.band = {f(0.1), 0.5, false};
+  o.gain = 2;
+  o.cycles = 1;
   o.reconstruction.lambda = f(0.1);
   return o;
 }
@@ -289,7 +289,7 @@ std::vector<FilterCase> filter_cases() {
   std::vector<FilterCase> cases;
   auto add = [&](const std::string& tag, std::vector<std::pair<std::string, std::string>> overrides,
                  const std::function<void(SpectralMeshFilterOptions&)>& set) {
-    SpectralMeshFilterOptions o = smooth_script_options();
+    SpectralMeshFilterOptions o = enhance_script_options();
     overrides.insert(overrides.begin(), {"cycles", "1"});  // a case's own value comes later and wins
     o.cycles = 1;
     set(o);
@@ -300,7 +300,7 @@ std::vector<FilterCase> filter_cases() {
   add("band1", {{"band", "1"}, {"cutoff", "0.03"}, {"gain", "0.5"}},
       [](auto& o) { o.band = {0.0, f(0.03), false}; o.gain = 0.5; });
   add("band2", {{"band", "2"}, {"lowFrequency", "0.02"}, {"highFrequency", "0.12"}, {"gain", "0"}},
-      [](auto& o) { o.band = {f(0.02), f(0.12), false}; });
+      [](auto& o) { o.band = {f(0.02), f(0.12), false}; o.gain = 0; });
   add("band3", {{"band", "3"}, {"lowFrequency", "0.02"}, {"highFrequency", "0.12"}, {"gain", "0.25"}},
       [](auto& o) { o.band = {f(0.02), f(0.12), true}; o.gain = 0.25; });
   add("coarse", {{"coarseToFine", "true"}, {"coarsestImfs", "2"}},
@@ -324,7 +324,7 @@ class SpectralFilterPath : public ::testing::TestWithParam<FilterCase> {};
 TEST_P(SpectralFilterPath, SavedMeshIsTheLibrarysResult) {
   const FilterCase& c = GetParam();
   const Input in = read_input("fandisk");
-  const ServerRun run = run_script(data_mesh("fandisk"), "smooth.mlx", c.overrides, c.tag);
+  const ServerRun run = run_script(data_mesh("fandisk"), "enhance.mlx", c.overrides, c.tag);
   Positions expected;
   SpectralMeshFilterReport report;
   std::string error;
@@ -343,12 +343,12 @@ INSTANTIATE_TEST_SUITE_P(Fandisk, SpectralFilterPath, ::testing::ValuesIn(filter
 
 TEST(MeshlabserverParameters, NoiseSigmaDirectionSeed) {
   const Input in = read_input("fandisk");
-  for (int direction : {0, 1}) {
+  const NoiseDirection directions[] = {NoiseDirection::Random, NoiseDirection::Normal, NoiseDirection::Isotropic};
+  for (int direction : {0, 1, 2}) {
     const std::string tag = "noise_" + std::to_string(direction);
     const ServerRun run = run_script(data_mesh("fandisk"), "add_noise.mlx",
                                      {{"sigmaPercent", "7"}, {"direction", std::to_string(direction)}, {"seed", "5"}}, tag);
-    const Positions expected = add_gaussian_noise(in.positions, in.faces, f(7), direction ? NoiseDirection::Normal
-                                                                                         : NoiseDirection::Random, 5);
+    const Positions expected = add_gaussian_noise(in.positions, in.faces, f(7), directions[direction], 5);
     expect_positions(saved_positions(run), expected, in.diagonal, tag);
   }
 }
@@ -383,31 +383,37 @@ TEST(MeshlabserverParameters, DenoiseOptions) {
     std::function<void(DenoiseOptions&)> set;
   };
   const Case cases[] = {
-      {"features", {{"featureAngle", "40"}, {"normalFilterIterations", "2"}, {"shortLinePasses", "3"}, {"cycles", "2"},
-                    {"cutoff", "0.08"}, {"lambda", "0.5"}, {"refineNormalPasses", "0"}, {"showFeatures", "1"}},
+      {"paper_stage", {{"paperStage", "true"}, {"noisePercent", "5"}, {"untangle", "false"}, {"refineRounds", "2"},
+                       {"featureAngle", "40"}, {"normalFilterIterations", "2"}, {"shortLinePasses", "3"}, {"cycles", "2"},
+                       {"cutoff", "0.08"}, {"lambda", "0.5"}, {"refineNormalPasses", "3"}, {"refineVertexIterations", "5"},
+                       {"showFeatures", "1"}},
        [](DenoiseOptions& o) {
+         o.paper_stage = true;
+         o.noise = f(5) / 100.0;
+         o.untangle = false;
+         o.refine_rounds = 2;
          o.features.angle_degrees = f(40);
          o.features.filter_iterations = 2;
          o.short_line_passes = 3;
          o.cycles = 2;
          o.cutoff = f(0.08);
          o.reconstruction.lambda = f(0.5);
-         o.refine_normal_passes = 0;
-       }},
-      {"no_features", {{"detectFeatures", "false"}, {"seed", "3"}, {"maxImfs", "3"}, {"refineNormalPasses", "3"},
-                       {"refineVertexIterations", "5"}},
-       [](DenoiseOptions& o) {
-         o.detect_features = false;
-         o.features.filter_iterations = 8;
-         o.cycle.seed = 3;
-         o.emd.max_imfs = 3;
          o.refine_normal_passes = 3;
          o.refine_vertex_iterations = 5;
        }},
+      {"paper_stage_only", {{"paperStage", "true"}, {"detectFeatures", "false"}, {"seed", "3"}, {"maxImfs", "3"},
+                            {"refineNormalPasses", "0"}},
+       [](DenoiseOptions& o) {
+         o.paper_stage = true;
+         o.detect_features = false;
+         o.cycle.seed = 3;
+         o.emd.max_imfs = 3;
+         o.refine_normal_passes = 0;
+       }},
+      {"default", {}, [](DenoiseOptions&) {}},
   };
   for (const Case& c : cases) {
-    DenoiseOptions o;
-    o.features.filter_iterations = 8;  // denoise.mlx
+    DenoiseOptions o;  // denoise.mlx: the library's defaults
     c.set(o);
     Positions expected;
     DenoiseReport report;
@@ -415,7 +421,7 @@ TEST(MeshlabserverParameters, DenoiseOptions) {
     ASSERT_TRUE(feature_preserving_denoise(noisy, in.faces, o, expected, report, error)) << error;
     const ServerRun run = run_script(input, "denoise.mlx", c.overrides, "denoise_" + c.tag);
     expect_positions(saved_positions(run), expected, in.diagonal, c.tag);
-    if (c.tag == "features") {  // showFeatures 1: the feature vertices are selected
+    if (c.tag == "paper_stage") {  // showFeatures 1: the feature vertices are selected
       TriMesh saved;
       load(run, saved);
       int selected = 0;
@@ -425,8 +431,9 @@ TEST(MeshlabserverParameters, DenoiseOptions) {
       }
       EXPECT_EQ(selected, report.feature_vertices);
     }
-    if (o.detect_features) {
-      EXPECT_NE(run.log.find(std::to_string(report.feature_vertices) + " feature vertices"), std::string::npos) << run.log;
+    if (o.paper_stage && o.detect_features) {  // the log reports the library's detection and line processing
+      EXPECT_NE(run.log.find("features: " + std::to_string(report.feature_vertices) + " vertices"), std::string::npos) << run.log;
+      EXPECT_NE(run.log.find(std::to_string(report.lines_by_emd) + " lines by EMD"), std::string::npos) << run.log;
     }
   }
 }

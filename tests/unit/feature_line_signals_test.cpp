@@ -63,6 +63,7 @@ TEST(FeatureLineSignals, LongCreasesAreDecomposedByEmd) {
   const test::ArrayMesh m = box(6, 6, 160);
   const Positions noisy = add_gaussian_noise(m.positions, m.faces, 10.0, NoiseDirection::Random, 3);
   DenoiseOptions o;
+  o.paper_stage = true;
   Positions result;
   DenoiseReport report;
   std::string error;
@@ -81,6 +82,7 @@ TEST(FeatureLineSignals, LongCreaseSignalsAreLowPassFiltered) {
   const test::ArrayMesh m = box(6, 6, 160);
   const Positions noisy = add_gaussian_noise(m.positions, m.faces, 10.0, NoiseDirection::Random, 3);
   DenoiseOptions o;
+  o.paper_stage = true;
   o.refine_normal_passes = 0;
   Positions result;
   DenoiseReport report;

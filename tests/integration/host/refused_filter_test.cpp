@@ -179,11 +179,11 @@ TEST_P(RefusedFilter, LeavesTheMeshExactlyAsItWas) {
 }
 
 const std::vector<std::string> kCycleFilters = {"HHT: Hamiltonian Cycle", "HHT: Hilbert Spectra", "HHT: Spectral Filter",
-                                                "HHT: Feature-Preserving Denoise"};
+                                                "HHT: Feature-Preserving Denoise", "HHT: Adaptive Smooth"};
 std::vector<std::string> every_filter() {
   std::vector<std::string> all = kCycleFilters;
   for (const char* name : {"HHT: Curvature Signal", "HHT: Add Gaussian Noise", "HHT: Compare to Reference",
-                           "Bilateral Mesh Denoising"})
+                           "Bilateral Mesh Denoising", "Guided Normal Filtering Denoise"})
     all.push_back(name);
   return all;
 }
