@@ -16,4 +16,11 @@ test_meshlab2022=ON
 [ $test_meshlab2022 = OFF ] || echo "[test] MeshLab 2022.02 set-up and build: $((SECONDS - start)) s"
 "$ROOT/scripts/build.sh" -DHHT_TEST_MESHLAB2022=$test_meshlab2022
 cd "$ROOT/build"
+# A build that left the plugin out has no meshlabserver tests and would pass on the unit tests
+# alone: refuse it. The floor is below today's count so that adding tests never trips it.
+meshlabserver_tests=$(ctest -N -L meshlabserver | sed -n 's/^Total Tests: //p')
+if [ "${meshlabserver_tests:-0}" -lt 60 ]; then
+  echo "error: ${meshlabserver_tests:-0} meshlabserver tests found (expected at least 60): was the plugin built?" >&2
+  exit 1
+fi
 ctest --output-on-failure -j"$(nproc)"

@@ -16,18 +16,7 @@ namespace fs = std::filesystem;
 
 // Runs meshlabserver with two inputs: layer 0 the reference, layer 1 (current) the result.
 ServerRun compare(const std::string& reference, const std::string& result, const std::string& tag) {
-  ServerRun run;
-  run.output = output_path(tag + ".ply");
-  fs::remove(run.output);
-  const std::string log = output_path(tag + ".log");
-  const std::string command = "cd '" + std::string(HHT_OUTPUT_DIR) + "' && xvfb-run -a -s '-screen 0 800x600x24' '" +
-                              std::string(HHT_STAGE_DIR) + "/bin/meshlabserver' -i '" + reference + "' -i '" + result +
-                              "' -o '" + run.output + "' -m vq vc -s '" + resource("compare.mlx") + "' > '" + log + "' 2>&1";
-  const int status = std::system(command.c_str());
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(log);
-  run.log.assign(std::istreambuf_iterator<char>(in), {});
-  return run;
+  return run_script(MeshLab::V2020, {reference, result}, resource("compare.mlx"), tag);
 }
 
 double logged(const std::string& log, const std::string& key) {

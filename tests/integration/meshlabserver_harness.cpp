@@ -3,6 +3,11 @@
 #include <gtest/gtest.h>
 #include <wrap/io_trimesh/import_ply.h>
 
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -17,12 +22,60 @@ namespace fs = std::filesystem;
 std::string resource(const std::string& name) { return std::string(HHT_RESOURCES_DIR) + "/" + name; }
 std::string data_mesh(const std::string& name) { return std::string(HHT_DATA_DIR) + "/" + name + ".off"; }
 
-std::string output_path(const std::string& file) {
-  fs::create_directories(HHT_OUTPUT_DIR);
-  return std::string(HHT_OUTPUT_DIR) + "/" + file;
+std::string output_dir() {
+  // one folder per test: ctest -j runs tests in parallel, and scripts write relative paths
+  const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::string name = test ? std::string(test->test_suite_name()) + "." + test->name() : "no_test";
+  for (char& c : name)
+    if (c == '/') c = '_';
+  const std::string dir = std::string(HHT_OUTPUT_DIR) + "/" + name;
+  fs::create_directories(dir);
+  return dir;
 }
 
+std::string output_path(const std::string& file) { return output_dir() + "/" + file; }
+
 namespace {
+
+// One Xvfb per test process for 2020.09's meshlabserver. The server picks a free display number
+// itself (-displayfd), so parallel tests cannot race for one as xvfb-run -a's check-then-start can.
+class VirtualDisplay {
+ public:
+  static const std::string& name() {
+    static VirtualDisplay display;
+    return display.name_;
+  }
+  ~VirtualDisplay() {
+    if (pid_ > 0) {
+      kill(pid_, SIGTERM);
+      waitpid(pid_, nullptr, 0);
+    }
+  }
+
+ private:
+  VirtualDisplay() {
+    int fds[2];
+    if (pipe(fds) != 0) return;
+    pid_ = fork();
+    if (pid_ == 0) {
+      prctl(PR_SET_PDEATHSIG, SIGTERM);  // never outlive the test
+      close(fds[0]);
+      freopen("/dev/null", "w", stderr);
+      const std::string fd = std::to_string(fds[1]);
+      execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "800x600x24", "-nolisten", "tcp",
+             static_cast<char*>(nullptr));
+      _exit(127);
+    }
+    close(fds[1]);
+    std::string number;
+    char c;
+    while (read(fds[0], &c, 1) == 1 && c != '\n') number += c;
+    close(fds[0]);
+    if (!number.empty()) name_ = ":" + number;
+  }
+  pid_t pid_ = -1;
+  std::string name_;
+};
 
 #ifdef HHT_MESHLAB2022_BUILD
 // The project as the Debian 13 root sees it (in_debian13.sh mounts it at HHT_PROJECT_INSIDE).
@@ -40,14 +93,19 @@ std::string server_command(MeshLab meshlab, const std::vector<std::string>& inpu
                            const std::string& script) {
   std::string args;
   if (meshlab == MeshLab::V2020) {
+    const std::string& display = VirtualDisplay::name();
+    if (display.empty()) {
+      ADD_FAILURE() << "Xvfb did not start";
+      return "false";
+    }
     for (const auto& input : inputs) args += " -i '" + input + "'";
-    return "xvfb-run -a -s '-screen 0 800x600x24' '" + std::string(HHT_STAGE_DIR) + "/bin/meshlabserver'" + args +
-           " -o '" + output + "' -m vq vc -s '" + script + "'";
+    return "DISPLAY=" + display + " '" + std::string(HHT_STAGE_DIR) + "/bin/meshlabserver'" + args + " -o '" + output +
+           "' -m vq vc vf -s '" + script + "'";
   }
 #ifdef HHT_MESHLAB2022_BUILD
   for (const auto& input : inputs) args += " -i '" + inside_root(input) + "'";
   const std::string build = inside_root(HHT_MESHLAB2022_BUILD);
-  return "'" + std::string(HHT_SOURCE_DIR) + "/scripts/in_debian13.sh' sh -c \"cd '" + inside_root(HHT_OUTPUT_DIR) +
+  return "'" + std::string(HHT_SOURCE_DIR) + "/scripts/in_debian13.sh' sh -c \"cd '" + inside_root(output_dir()) +
          "' && '" + build + "/tools/meshlabserver2022' -p '" + build + "/filter_hht/libfilter_hht.so'" + args +
          " -o '" + inside_root(output) + "' -m vq vc -s '" + inside_root(script) + "'\"";
 #else
@@ -59,13 +117,13 @@ std::string server_command(MeshLab meshlab, const std::vector<std::string>& inpu
 }  // namespace
 
 ServerRun run_script(MeshLab meshlab, const std::vector<std::string>& inputs, const std::string& script,
-                     const std::string& tag) {
+                     const std::string& tag, const std::string& extension) {
   ServerRun run;
-  run.output = output_path(tag + ".ply");
+  run.output = output_path(tag + extension);
   const std::string log = output_path(tag + ".log");
   fs::remove(run.output);
   // the servers read the script's relative paths from their working directory
-  const std::string command = "cd '" + std::string(HHT_OUTPUT_DIR) + "' && " +
+  const std::string command = "cd '" + output_dir() + "' && " +
                               server_command(meshlab, inputs, run.output, script) + " > '" + log + "' 2>&1";
   const int status = std::system(command.c_str());
   run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -81,6 +139,26 @@ bool load_ply(const std::string& path, TriMesh& m, bool& has_quality) {
   if (vcg::tri::io::ImporterPLY<TriMesh>::Open(m, path.c_str(), mask) != 0) return false;
   has_quality = (mask & vcg::tri::io::Mask::IOM_VERTQUALITY) != 0;
   return true;
+}
+
+ObjPolyline read_obj_polyline(const std::string& path) {
+  ObjPolyline out;
+  std::ifstream in(path);
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream fields(line);
+    std::string kind;
+    fields >> kind;
+    if (kind == "v") {
+      Eigen::RowVector3d p;
+      fields >> p[0] >> p[1] >> p[2];
+      out.vertices.push_back(p);
+    } else if (kind == "l") {
+      int a = 0, b = 0;
+      fields >> a >> b;
+      out.edges.push_back({a - 1, b - 1});  // OBJ counts from 1
+    }
+  }
+  return out;
 }
 
 void load(const ServerRun& run, TriMesh& m) {

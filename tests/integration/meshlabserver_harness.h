@@ -1,4 +1,4 @@
-// Runs the staged meshlabserver (under xvfb-run) on a script and reads back what it saved.
+// Runs the staged meshlabserver (under a private Xvfb) on a script and reads back what it saved.
 #pragma once
 
 #include "mesh_arrays.h"
@@ -20,20 +20,30 @@ struct ServerRun {
 // root, MeshLab 2022.02's libraries through tools/meshlabserver2022 with the 2022.02 plugin.
 enum class MeshLab { V2020, V2022 };
 
-// Runs `script` (a path) on `inputs` (layers, the last one current), saving vertex quality
-// and colour to a PLY named after `tag` in the test output folder.
+// Runs `script` (a path) on `inputs` (layers, the last one current), saving vertex quality,
+// colour and (2020.09) flags to a file named after `tag` in the running test's own folder, which
+// is also the server's working directory; 2020.09 runs under a private Xvfb. The format follows
+// `extension` (meshlabserver's PLY writer drops edges; its OBJ writer keeps them).
 ServerRun run_script(MeshLab meshlab, const std::vector<std::string>& inputs, const std::string& script,
-                     const std::string& tag);
+                     const std::string& tag, const std::string& extension = ".ply");
 inline ServerRun run_meshlabserver(const std::string& input, const std::string& script, const std::string& tag) {
   return run_script(MeshLab::V2020, {input}, script, tag);
 }
 
 std::string resource(const std::string& name);   // resources/<name>
 std::string data_mesh(const std::string& name);  // data/<name>.off
-std::string output_path(const std::string& file);
+std::string output_dir();                          // the running test's own folder
+std::string output_path(const std::string& file);  // a file in it
 
 // Loads a PLY with vertex quality; fails the calling test when it cannot.
 bool load_ply(const std::string& path, TriMesh& m, bool& has_quality);
+
+// The vertices and edges ("l a b", as 0-based indices) of an OBJ holding a polyline.
+struct ObjPolyline {
+  std::vector<Eigen::RowVector3d> vertices;
+  std::vector<std::pair<int, int>> edges;
+};
+ObjPolyline read_obj_polyline(const std::string& path);
 
 // The mesh a successful run saved; fails the calling test when the run failed or saved nothing.
 void load(const ServerRun& run, TriMesh& m);

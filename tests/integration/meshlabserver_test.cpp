@@ -1,14 +1,17 @@
 // The plugin as a user runs it: the shipped scripts through the real meshlabserver.
 #include "meshlabserver_harness.h"
 
+#include "gaussian_noise.h"
 #include "mean_curvature.h"
 
 #include <gtest/gtest.h>
+#include <wrap/io_trimesh/export_ply.h>
 #include <wrap/io_trimesh/import_off.h>
 
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <sstream>
 
 namespace hht::test {
 namespace {
@@ -55,27 +58,6 @@ TEST(Meshlabserver, HamiltonianCycleOnFandisk) {
     EXPECT_TRUE(edges.count({std::min(a, b), std::max(a, b)})) << "cycle step " << i << " is not a mesh edge";
   }
   EXPECT_NE(run.log.find("on the cycle"), std::string::npos);
-}
-
-TEST(Meshlabserver, CycleLayerIsAnEdgePolyline) {
-  const std::string script = write_script("cycle_layer",
-      " <filter name=\"HHT: Hamiltonian Cycle\">\n"
-      "  <Param type=\"RichInt\" name=\"seed\" value=\"3\"/>\n"
-      "  <Param type=\"RichInt\" name=\"tries\" value=\"2\"/>\n"
-      "  <Param type=\"RichBool\" name=\"repair\" value=\"true\"/>\n"
-      "  <Param type=\"RichBool\" name=\"addCycleLayer\" value=\"true\"/>\n"
-      " </filter>\n"
-      " <filter name=\"Change the current layer\">\n"
-      "  <Param type=\"RichMesh\" name=\"layer\" value=\"1\"/>\n"
-      " </filter>\n");
-  const ServerRun run = run_meshlabserver(data_mesh("fandisk"), script, "cycle_layer");
-  ASSERT_EQ(run.exit_code, 0) << run.log;
-  // the saved current layer is the polyline: one vertex per cycle vertex, no faces
-  TriMesh m;
-  bool has_quality = false;
-  ASSERT_TRUE(load_ply(run.output, m, has_quality));
-  EXPECT_GE(m.vn, 0.999 * 6475);
-  EXPECT_EQ(m.fn, 0);
 }
 
 TEST(Meshlabserver, CurvatureSignalMatchesTheLibrary) {
@@ -130,8 +112,28 @@ const BadInput kFin{"fin",
 const BadInput kNaN{"nan", "OFF\n4 4 0\n0 0 0\n1 0 0\nnan 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n",
                     "NaN"};
 
+// A ring of quads closed with a half twist.
+const std::string kMoebiusOff = [] {
+  const int steps = 24;
+  std::ostringstream off;
+  off << "OFF\n" << 2 * steps << " " << 2 * steps << " 0\n";
+  for (int i = 0; i < steps; ++i) {
+    const double a = 2 * M_PI * i / steps, twist = a / 2;
+    for (double w : {-0.3, 0.3})
+      off << (1 + w * std::cos(twist)) * std::cos(a) << " " << (1 + w * std::cos(twist)) * std::sin(a) << " "
+          << w * std::sin(twist) << "\n";
+  }
+  for (int i = 0; i < steps; ++i) {
+    const bool last = i + 1 == steps;
+    const int a = 2 * i, b = 2 * i + 1, c = last ? 1 : 2 * i + 2, d = last ? 0 : 2 * i + 3;
+    off << "3 " << a << " " << b << " " << d << "\n3 " << a << " " << d << " " << c << "\n";
+  }
+  return off.str();
+}();
+const BadInput kMoebius{"moebius", kMoebiusOff.c_str(), "not orientable"};
+
 INSTANTIATE_TEST_SUITE_P(Cycle, MeshlabserverBadInput,
-                         ::testing::Combine(::testing::Values(kCloud, kFin, kNaN),
+                         ::testing::Combine(::testing::Values(kCloud, kFin, kNaN, kMoebius),
                                             ::testing::Values("hamiltonian_cycle.mlx")));
 INSTANTIATE_TEST_SUITE_P(Curvature, MeshlabserverBadInput,
                          ::testing::Combine(::testing::Values(kCloud, kNaN), ::testing::Values("curvature_signal.mlx")));
@@ -139,11 +141,35 @@ INSTANTIATE_TEST_SUITE_P(Curvature, MeshlabserverBadInput,
 // Every shipped script runs as it is on the default model.
 class ShippedScript : public ::testing::TestWithParam<std::string> {};
 
+// compare.mlx compares two different meshes: Fandisk (the reference) and a noisy copy.
 TEST_P(ShippedScript, RunsOnFandisk) {
-  const ServerRun run = run_meshlabserver(data_mesh("fandisk"), GetParam(), "script_" + fs::path(GetParam()).stem().string());
-  EXPECT_EQ(run.exit_code, 0) << run.log;
-  EXPECT_TRUE(fs::exists(run.output));
+  const std::string stem = fs::path(GetParam()).stem().string();
+  std::vector<std::string> inputs{data_mesh("fandisk")};
+  TriMesh mesh;
+  ASSERT_EQ(vcg::tri::io::ImporterOFF<TriMesh>::Open(mesh, data_mesh("fandisk").c_str()), 0);
+  Positions input;
+  Faces faces;
+  mesh_to_arrays(mesh, input, faces);
+  if (stem == "compare") {
+    input = add_gaussian_noise(input, faces, 10.0, NoiseDirection::Random, 1);
+    for (int v = 0; v < mesh.vn; ++v) mesh.vert[v].P() = vcg::Point3d(input(v, 0), input(v, 1), input(v, 2));
+    inputs.push_back(output_path("fandisk_noisy.ply"));
+    ASSERT_EQ(vcg::tri::io::ExporterPLY<TriMesh>::Save(mesh, inputs.back().c_str(), 0, false), 0);
+  }
+  const ServerRun run = run_meshlabserver(inputs, GetParam(), "script_" + stem);
   EXPECT_EQ(run.log.find("failed"), std::string::npos) << run.log;
+  TriMesh out;
+  load(run, out);
+  ASSERT_EQ(out.vn, input.rows());
+  // each script changes the positions or writes a varying quality
+  double moved = 0, lowest = out.vert[0].Q(), highest = lowest;
+  for (int v = 0; v < out.vn; ++v) {
+    const auto& p = out.vert[v].cP();
+    moved = std::max(moved, (Eigen::RowVector3d(p[0], p[1], p[2]) - input.row(v)).norm());
+    lowest = std::min(lowest, double(out.vert[v].Q()));
+    highest = std::max(highest, double(out.vert[v].Q()));
+  }
+  EXPECT_TRUE(moved > 1e-4 * bbox_diagonal(mesh) || highest > lowest) << "the output is the input";
 }
 
 std::vector<std::string> shipped_scripts() {

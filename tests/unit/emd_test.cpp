@@ -141,16 +141,41 @@ TEST(Emd, SeparatesThreeTonesOfWellSeparatedPeriods) {
   EXPECT_LT(reconstruction_error(r, signal), 1e-12 * max_abs(signal));
 }
 
-TEST(Emd, SumOfImfsAndResidueIsTheSignal) {
+// The IMFs are known: a fast and a slow tone on a cycle plus an offset. Only sifting that
+// really subtracts the envelope mean finds them (the residue is defined as the signal minus
+// the IMFs, so the sum alone proves nothing).
+TEST(Emd, TwoTonesAndAnOffsetOnACycle) {
+  const int n = 4096;
+  const std::vector<double> fast = tone(n, 16.0, 1.0, 0.4), slow = tone(n, 256.0, 2.0, 1.3);
+  const std::vector<double> signal = add(add(fast, slow), std::vector<double>(n, 0.7));
+  const EmdResult r = hht::emd(signal);
+  ASSERT_EQ(r.imfs.size(), 2u);
+  EXPECT_LT(relative_error(r.imfs[0], fast), 5e-5);  // measured 5.0e-6
+  EXPECT_LT(relative_error(r.imfs[1], slow), 5e-5);  // measured 2.5e-6
+  for (double v : r.residue) ASSERT_NEAR(v, 0.7, 1e-9);  // measured 9e-16
+  for (int s : r.sifts) EXPECT_GT(s, 0);
+}
+
+// Every IMF of a many-scale signal oscillates about zero: its extrema and its zero crossings
+// agree to 3% (measured: 2.4% at worst, IMF 3 of 5; the signal itself, a random walk plus two
+// tones, has 15 times more extrema than crossings), while the residue is the trend.
+TEST(Emd, EveryImfCrossesZeroBetweenItsExtrema) {
   for (SignalBoundary b : {SignalBoundary::Periodic, SignalBoundary::Open}) {
+    SCOPED_TRACE(b == SignalBoundary::Periodic ? "periodic" : "open");
     const std::vector<double> signal = rich_signal(20000, 3);
     EmdOptions o;
     o.boundary = b;
     const EmdResult r = hht::emd(signal, o);
     ASSERT_GE(r.imfs.size(), 4u);
-    EXPECT_EQ(r.sifts.size(), r.imfs.size());
-    for (const auto& imf : r.imfs) EXPECT_EQ(imf.size(), signal.size());
-    EXPECT_LT(reconstruction_error(r, signal), 1e-12 * max_abs(signal));
+    for (size_t i = 0; i < r.imfs.size(); ++i) {
+      const std::vector<double>& imf = r.imfs[i];
+      const hht::ExtremaCount c = hht::count_extrema(imf, b);
+      int crossings = 0;
+      for (size_t t = 0; t + 1 < imf.size(); ++t) crossings += (imf[t] < 0) != (imf[t + 1] < 0);
+      EXPECT_LE(std::abs(c.maxima + c.minima - crossings), 0.03 * (c.maxima + c.minima)) << "IMF " << i;
+    }
+    const hht::ExtremaCount rc = hht::count_extrema(r.residue, b);
+    EXPECT_LT(std::min(rc.maxima, rc.minima), o.min_extrema);
   }
 }
 

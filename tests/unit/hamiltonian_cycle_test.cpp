@@ -59,6 +59,13 @@ TEST_P(RealMesh, ValidCycleCoveringAtLeast999Permille) {
 
 INSTANTIATE_TEST_SUITE_P(Cgal, RealMesh, ::testing::Values("fandisk", "armadillo", "elephant", "sphere"));
 
+// docs/benchmarks.md: 1 isolated of Fandisk's 6475 vertices, 2 of armadillo's 26002, with the
+// default options (README: "typically 0.01% or fewer").
+TEST(HamiltonianCycle, IsolatedVerticesAsDocumented) {
+  EXPECT_LE(run(test::load_data_mesh("fandisk")).isolated, 1);
+  EXPECT_LE(run(test::load_data_mesh("armadillo")).isolated, 2);
+}
+
 TEST(HamiltonianCycle, SphereCoversEveryVertex) {
   const ArrayMesh m = test::sphere(4);
   const HamiltonianCycle cycle = run(m);
@@ -203,6 +210,29 @@ TEST(HamiltonianCycleErrors, NonManifoldVertex) {
     for (int k = 0; k < 3; ++k)
       if (m.faces(f, k) == a.vertices()) m.faces(f, k) = 0;
   EXPECT_NE(failure(m).find("non-manifold vert"), std::string::npos);
+}
+
+// A Moebius strip: a ring of quads whose last quad joins the first with a half twist.
+TEST(HamiltonianCycleErrors, NonOrientableStrip) {
+  const int steps = 24;
+  ArrayMesh m;
+  m.positions.resize(2 * steps, 3);
+  for (int i = 0; i < steps; ++i) {
+    const double a = 2 * M_PI * i / steps, twist = a / 2;
+    for (int side = 0; side < 2; ++side) {
+      const double w = side ? 0.3 : -0.3, r = 1 + w * std::cos(twist);
+      m.positions.row(2 * i + side) << r * std::cos(a), r * std::sin(a), w * std::sin(twist);
+    }
+  }
+  m.faces.resize(2 * steps, 3);
+  for (int i = 0; i < steps; ++i) {
+    const bool last = i + 1 == steps;
+    const int a = 2 * i, b = 2 * i + 1;
+    const int c = last ? 1 : 2 * i + 2, d = last ? 0 : 2 * i + 3;  // the twist swaps the sides
+    m.faces.row(2 * i) << a, b, d;
+    m.faces.row(2 * i + 1) << a, d, c;
+  }
+  EXPECT_NE(failure(m).find("not orientable"), std::string::npos) << failure(m);
 }
 
 TEST(HamiltonianCycleErrors, FaceRepeatingAVertex) {

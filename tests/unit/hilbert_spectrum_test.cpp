@@ -135,6 +135,40 @@ TEST(HilbertSpectrum, NearZeroAmplitudeTakesTheMeanFrequency) {
   }
 }
 
+// Two tones of whole cycles, the faster one 0.9 as strong: z = e^(i w1 t) + 0.9 e^(i w2 t)
+// exactly, and where the two are in opposition its phase steps backwards (down to about
+// -0.4 cycles per sample). There the frequency must be the amplitude-weighted mean over the
+// other samples; elsewhere the phase step itself.
+TEST(HilbertSpectrum, BackwardPhaseStepTakesTheMeanFrequency) {
+  const int n = 1000;
+  const double f1 = 50.0 / n, f2 = 100.0 / n;
+  std::vector<std::complex<double>> z(n);
+  std::vector<double> x(n);
+  for (int t = 0; t < n; ++t) {
+    z[t] = std::polar(1.0, 2.0 * kPi * f1 * t) + std::polar(0.9, 2.0 * kPi * f2 * t);
+    x[t] = z[t].real();
+  }
+  std::vector<double> step(n);
+  double weighted = 0.0, weights = 0.0;
+  int backwards = 0;
+  for (int t = 0; t < n; ++t) {
+    step[t] = std::arg(z[(t + 1) % n] * std::conj(z[t])) / (2.0 * kPi);
+    if (step[t] < 0) {
+      ++backwards;
+    } else {
+      weighted += std::abs(z[t]) * step[t];
+      weights += std::abs(z[t]);
+    }
+  }
+  ASSERT_GT(backwards, 20);  // 50 oppositions, a few samples each
+  const double mean = weighted / weights;
+  const HilbertSpectrum s = HilbertTransformer(n).spectrum(x, SignalBoundary::Periodic);
+  for (int t = 0; t < n; ++t) {
+    ASSERT_NEAR(s.amplitude[t], std::abs(z[t]), 1e-9) << t;
+    ASSERT_NEAR(s.frequency[t], step[t] < 0 ? mean : step[t], 1e-9) << t;
+  }
+}
+
 TEST(HilbertSpectrum, OpenSignalLastSampleCopiesItsPredecessor) {
   const int n = 500;
   const std::vector<double> x = cosine(n, 0.0731);  // not whole cycles: the ends disagree

@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/SparseCholesky>
+
+#include <cmath>
 #include <random>
 
 namespace hht {
@@ -32,24 +35,128 @@ Eigen::VectorXd signal_of(const test::ArrayMesh& m) {
 double diagonal(const Positions& p) { return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(); }
 double max_displacement(const Positions& a, const Positions& b) { return (a - b).rowwise().norm().maxCoeff(); }
 
-class RoundTrip : public ::testing::TestWithParam<const char*> {};
+// The cotangent Laplacian assembled a second, plain way: angles by atan2, one triplet per
+// half-edge, mixed Voronoi areas (Meyer et al. 2003) per face, area-weighted normals.
+struct IndependentLaplacian {
+  Eigen::SparseMatrix<double> l;  // M^-1 C
+  Positions normals;
+};
 
-TEST_P(RoundTrip, UnchangedSignalGivesTheMeshBack) {
-  const test::ArrayMesh m = std::string(GetParam()) == "sphere5" ? test::sphere(5) : test::load_data_mesh(GetParam());
-  const Solved s = solve(m, signal_of(m));
-  EXPECT_LT(max_displacement(s.positions, m.positions), 1e-9 * diagonal(m.positions));
+IndependentLaplacian assemble(const test::ArrayMesh& m) {
+  const int n = m.vertices();
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::VectorXd area = Eigen::VectorXd::Zero(n);
+  Positions normals = Positions::Zero(n, 3);
+  for (Eigen::Index f = 0; f < m.faces.rows(); ++f) {
+    const Eigen::Vector3i v = m.faces.row(f).transpose();
+    const Eigen::Vector3d p[3] = {m.positions.row(v[0]).transpose(), m.positions.row(v[1]).transpose(),
+                                  m.positions.row(v[2]).transpose()};
+    const Eigen::Vector3d cross = (p[1] - p[0]).cross(p[2] - p[0]);
+    const double face_area = 0.5 * cross.norm();
+    double angle[3], cot[3];
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d a = p[(k + 1) % 3] - p[k], b = p[(k + 2) % 3] - p[k];
+      angle[k] = std::atan2(a.cross(b).norm(), a.dot(b));
+      cot[k] = 1.0 / std::tan(angle[k]);
+    }
+    const bool obtuse = angle[0] > M_PI / 2 || angle[1] > M_PI / 2 || angle[2] > M_PI / 2;
+    for (int k = 0; k < 3; ++k) {
+      normals.row(v[k]) += cross.transpose();
+      // the edge opposite corner k joins the other two corners
+      const int i = v[(k + 1) % 3], j = v[(k + 2) % 3];
+      entries.emplace_back(i, j, -0.5 * cot[k]);
+      entries.emplace_back(j, i, -0.5 * cot[k]);
+      entries.emplace_back(i, i, 0.5 * cot[k]);
+      entries.emplace_back(j, j, 0.5 * cot[k]);
+      if (!obtuse) {
+        const double ij = (p[(k + 1) % 3] - p[k]).squaredNorm(), ik = (p[(k + 2) % 3] - p[k]).squaredNorm();
+        area[v[k]] += (ij * cot[(k + 2) % 3] + ik * cot[(k + 1) % 3]) / 8.0;
+      } else {
+        area[v[k]] += angle[k] > M_PI / 2 ? face_area / 2 : face_area / 4;
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> c(n, n);
+  c.setFromTriplets(entries.begin(), entries.end());
+  IndependentLaplacian out;
+  out.l = area.cwiseInverse().asDiagonal() * c;
+  out.normals = normals.rowwise().normalized();
+  return out;
 }
 
-INSTANTIATE_TEST_SUITE_P(Meshes, RoundTrip, ::testing::Values("fandisk", "sphere5", "elephant-with-holes"));
+test::ArrayMesh mesh_named(const std::string& name) {
+  return name == "sphere5" ? test::sphere(5) : test::load_data_mesh(name);
+}
+
+class IndependentSolve : public ::testing::TestWithParam<const char*> {};
+
+// G from the plain assembly is the library's G.
+TEST_P(IndependentSolve, CurvatureSignalAgrees) {
+  const test::ArrayMesh m = mesh_named(GetParam());
+  const IndependentLaplacian lap = assemble(m);
+  const Positions lv = lap.l * m.positions;
+  const Eigen::VectorXd g = (lv.array() * lap.normals.array()).rowwise().sum();
+  const Eigen::VectorXd library = signal_of(m);
+  EXPECT_LT((g - library).cwiseAbs().maxCoeff(), 1e-11 * library.cwiseAbs().maxCoeff());  // measured 3e-14 to 7e-13
+}
+
+// A changed signal rebuilt by the library (CG) against the normal equations of
+// min ||L X - T||^2 + mu^2 ||X - V||^2, T = L V + (G~ - G) n, solved here directly with the plain
+// L. The library solves on the mesh scaled to unit mean edge length s, so mu = lambda / s^2.
+TEST_P(IndependentSolve, ChangedSignalMatchesADirectSolveWithThePlainLaplacian) {
+  const test::ArrayMesh m = mesh_named(GetParam());
+  const IndependentLaplacian lap = assemble(m);
+  const Positions lv = lap.l * m.positions;
+  const Eigen::VectorXd g = (lv.array() * lap.normals.array()).rowwise().sum();
+  // a smooth change of G over the whole mesh
+  const Eigen::ArrayXd x = m.positions.col(0).array() / diagonal(m.positions);
+  const Eigen::VectorXd changed = g + (0.3 * g.cwiseAbs().mean() * (7.0 * x).sin()).matrix();
+  ReconstructionOptions options;
+  options.lambda = 0.05;
+  const Solved s = solve(m, changed, options);
+  const Positions target = lv + (changed - g).asDiagonal() * lap.normals;
+  double edges = 0;
+  for (Eigen::Index f = 0; f < m.faces.rows(); ++f)
+    for (int k = 0; k < 3; ++k) edges += (m.positions.row(m.faces(f, k)) - m.positions.row(m.faces(f, (k + 1) % 3))).norm();
+  const double mean_edge = edges / (3.0 * m.faces.rows());
+  const double mu2 = std::pow(options.lambda / (mean_edge * mean_edge), 2);
+  Eigen::SparseMatrix<double> identity(m.vertices(), m.vertices());
+  identity.setIdentity();
+  const Eigen::SparseMatrix<double> a = Eigen::SparseMatrix<double>(lap.l.transpose() * lap.l) + mu2 * identity;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(a);
+  ASSERT_EQ(solver.info(), Eigen::Success);
+  const Positions expected = solver.solve(Positions(lap.l.transpose() * target + mu2 * m.positions));
+  const double moved = max_displacement(expected, m.positions);
+  EXPECT_GT(moved, 5e-4 * diagonal(m.positions)) << "the change must move the mesh";
+  EXPECT_LT(max_displacement(s.positions, expected), 1e-7 * moved);  // measured 1.2e-9 to 6.7e-9
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, IndependentSolve, ::testing::Values("fandisk", "sphere5", "elephant-with-holes"));
 
 TEST(Reconstruction, LiteralNormalTargetDriftsTangentially) {
   // The paper's eq. 9 as written: with G~ == G the mesh still moves, which is why
-  // KeepTangential is the default (docs/benchmarks.md has the measured drift).
+  // KeepTangential is the default. docs/benchmarks.md: 1.66e-2 of the diagonal on Fandisk.
   const test::ArrayMesh m = test::load_data_mesh("fandisk");
   ReconstructionOptions literal;
   literal.target = ReconstructionTarget::NormalOnly;
   const Solved s = solve(m, signal_of(m), literal);
-  EXPECT_GT(max_displacement(s.positions, m.positions), 1e-4 * diagonal(m.positions));
+  EXPECT_NEAR(max_displacement(s.positions, m.positions) / diagonal(m.positions), 0.0166, 0.001);
+  const Solved kept = solve(m, signal_of(m));
+  EXPECT_LT(max_displacement(kept.positions, m.positions), 1e-9 * diagonal(m.positions));
+}
+
+// README: "14-17 iterations to a 1e-10 relative residual" (docs/benchmarks.md: G halved,
+// lambda 0.01; 14 on Fandisk, 16 on armadillo; measured the same here).
+TEST(Reconstruction, ConjugateGradientsTakeTheDocumentedIterations) {
+  for (const char* name : {"fandisk", "armadillo"}) {
+    SCOPED_TRACE(name);
+    const test::ArrayMesh m = test::load_data_mesh(name);
+    const Solved s = solve(m, 0.5 * signal_of(m));
+    EXPECT_GE(s.report.iterations, 13);
+    EXPECT_LE(s.report.iterations, 17);
+    EXPECT_LE(s.report.relative_residual, 1e-10);
+    EXPECT_GT(s.report.relative_residual, 1e-14);  // stopped at the tolerance, not run to the end
+  }
 }
 
 TEST(Reconstruction, ScaledMeshGivesTheScaledResult) {
@@ -75,7 +182,6 @@ TEST(Reconstruction, IterativeSolveMatchesDirectFactorisation) {
   const Solved iterative = solve(m, signal), exact = solve(m, signal, direct);
   EXPECT_LT(max_displacement(iterative.positions, exact.positions), 1e-7 * diagonal(m.positions));
   EXPECT_GT(iterative.report.iterations, 0);
-  EXPECT_LT(iterative.report.iterations, 100);
 }
 
 TEST(Reconstruction, CleanSignalRemovesNormalNoise) {

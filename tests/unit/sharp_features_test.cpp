@@ -179,20 +179,92 @@ TEST(SharpFeatures, CubeWithInconsistentOrientationGivesTheSameFeatures) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Fandisk. Noise-free: 736 feature vertices, 48 lines and 30 corners, 28 of valence 3 and two
-// of valence 4. Those two are artefacts: where long thin triangles span a narrow flat strip
-// between creases, the filter blends the neighbouring planes into the strip and a short line
-// cuts across it (of the 750 line edges, 689 lie on creases of 30 degrees or more, 46 on the
-// weak ~22 degree crease, 15 on no crease). At 5% noise the same 30 corners and 48 lines in
-// nine seeds out of ten (49 in one: a crease that fades out ends in two pieces).
+// Fandisk. Its true creases are known from the clean mesh: the edges whose two faces meet at
+// some angle or more, and its true corners the vertices where three or more such edges meet.
+// Creases of 30 degrees (the default threshold) must be found; detections must lie near
+// creases of 20 degrees (which includes Fandisk's one weak crease of ~22 degrees), and corners
+// near the 35 vertices where 20-degree creases meet. The detector is judged against these, not
+// against counts of its own output: those once pinned two valence-4 corners that are
+// artefacts (where long thin triangles span a narrow flat strip between creases, the filter
+// blends the neighbouring planes into the strip and a short line cuts across it); today they
+// are the two detected corners near no true corner.
 
-void expect_fandisk_counts(const std::vector<FeatureType>& type, const FeatureLines& fl, int lines_slack) {
-  EXPECT_NEAR(static_cast<double>(fl.lines.size()), 48.0, lines_slack);
-  EXPECT_EQ(fl.corners.size(), 30u);
-  EXPECT_EQ(std::count(fl.corner_valence.begin(), fl.corner_valence.end(), 3), 28);
-  EXPECT_EQ(std::count(fl.corner_valence.begin(), fl.corner_valence.end(), 4), 2);
-  EXPECT_NEAR(count_features(type), 736, 15);
-  EXPECT_EQ(std::count(fl.closed.begin(), fl.closed.end(), 1), 0);  // fandisk has no closed crease
+struct TrueFeatures {
+  std::vector<char> crease;   // per vertex: on a crease edge
+  std::vector<char> corner;   // per vertex: three or more crease edges meet
+  std::vector<int> corners;
+};
+
+TrueFeatures true_features(const test::ArrayMesh& m, double degrees) {
+  std::map<std::pair<int, int>, std::vector<int>> faces_of_edge;
+  for (int f = 0; f < m.faces.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = m.faces(f, k), b = m.faces(f, (k + 1) % 3);
+      faces_of_edge[{std::min(a, b), std::max(a, b)}].push_back(f);
+    }
+  auto normal = [&](int f) {
+    const Eigen::RowVector3d a = m.positions.row(m.faces(f, 0));
+    return Eigen::RowVector3d((m.positions.row(m.faces(f, 1)) - a).cross(m.positions.row(m.faces(f, 2)) - a).normalized());
+  };
+  TrueFeatures t{std::vector<char>(m.vertices(), 0), std::vector<char>(m.vertices(), 0), {}};
+  std::vector<int> crease_edges(m.vertices(), 0);
+  for (const auto& [edge, two] : faces_of_edge)
+    if (two.size() == 2 && normal(two[0]).dot(normal(two[1])) < std::cos(degrees * M_PI / 180)) {
+      t.crease[edge.first] = t.crease[edge.second] = 1;
+      ++crease_edges[edge.first];
+      ++crease_edges[edge.second];
+    }
+  for (int v = 0; v < m.vertices(); ++v)
+    if (crease_edges[v] >= 3) {
+      t.corner[v] = 1;
+      t.corners.push_back(v);
+    }
+  return t;
+}
+
+// Detected corners near true corners, and true corners found: each within two edge lengths.
+void expect_corners_near_the_true_ones(const test::ArrayMesh& m, const FeatureLines& fl, int spurious_allowed,
+                                       int missed_allowed) {
+  const TrueFeatures truth = true_features(m, 20.0);
+  const double l = mean_edge_length(m.positions, m.faces);
+  auto near_any = [&](int v, const std::vector<int>& set) {
+    for (int w : set)
+      if ((m.positions.row(v) - m.positions.row(w)).norm() < 2 * l) return true;
+    return false;
+  };
+  int spurious = 0, missed = 0;
+  for (int c : fl.corners) spurious += !near_any(c, truth.corners);
+  for (int c : truth.corners) missed += !near_any(c, fl.corners);
+  EXPECT_LE(spurious, spurious_allowed) << fl.corners.size() << " corners detected";
+  EXPECT_LE(missed, missed_allowed) << truth.corners.size() << " true corners";
+}
+
+// Detected feature vertices within one ring of a true crease vertex, and true crease vertices
+// with a detected one within one ring.
+void expect_features_near_the_true_creases(const test::ArrayMesh& m, const std::vector<FeatureType>& type,
+                                           double found_share, double kept_share) {
+  const TrueFeatures strong = true_features(m, 30.0), weak = true_features(m, 20.0);
+  std::vector<std::vector<int>> ring(m.vertices());
+  for (Eigen::Index f = 0; f < m.faces.rows(); ++f)
+    for (int k = 0; k < 3; ++k) ring[m.faces(f, k)].push_back(m.faces(f, (k + 1) % 3));
+  auto near = [&](auto&& is, int v) {
+    if (is(v)) return true;
+    for (int w : ring[v])
+      if (is(w)) return true;
+    return false;
+  };
+  auto detected = [&](int v) { return type[v] != FeatureType::None; };
+  auto weak_crease = [&](int v) { return weak.crease[v] != 0; };
+  int creases = 0, found = 0, kept = 0;
+  for (int v = 0; v < m.vertices(); ++v) {
+    if (strong.crease[v]) {
+      ++creases;
+      found += near(detected, v);
+    }
+    if (detected(v)) kept += near(weak_crease, v);
+  }
+  EXPECT_GE(found, found_share * creases) << found << " of " << creases << " true crease vertices found";
+  EXPECT_GE(kept, kept_share * count_features(type)) << kept << " of " << count_features(type) << " detected near a crease";
 }
 
 TEST(SharpFeatures, FandiskNoiseFreeLinesAreOrderedPaths) {
@@ -200,7 +272,10 @@ TEST(SharpFeatures, FandiskNoiseFreeLinesAreOrderedPaths) {
   const std::vector<FeatureType> type = detect(m.positions, m.faces);
   const FeatureLines fl = link_feature_lines(m.positions, m.faces, type);
   expect_well_formed(m.faces, type, fl);
-  expect_fandisk_counts(type, fl, 0);
+  // measured: 2 spurious corners (the artefacts), none missed; 702 of 712 crease vertices
+  // found, every detection within one ring of a crease
+  expect_corners_near_the_true_ones(m, fl, 2, 0);
+  expect_features_near_the_true_creases(m, type, 0.98, 0.99);
 
   // Lines follow creases: the faces of nearly every line edge meet at 10 degrees or more.
   std::map<std::pair<int, int>, std::vector<int>> faces_of_edge;
@@ -230,50 +305,25 @@ TEST(SharpFeatures, FandiskWithFivePercentNoise) {
     const std::vector<FeatureType> type = detect(p, m.faces);
     const FeatureLines fl = link_feature_lines(p, m.faces, type);
     expect_well_formed(m.faces, type, fl);
-    expect_fandisk_counts(type, fl, 2);
+    expect_corners_near_the_true_ones(m, fl, 2, 0);  // measured as noise-free
+    expect_features_near_the_true_creases(m, type, 0.98, 0.99);  // measured 701-704 of 712, all
   }
 }
 
-// The hard case, 30% noise (raw face normals off by ~28 degrees on average). Measured over
-// eight seeds against the noise-free detection: 98.8-100% of its feature vertices have a
-// detected one within one ring and 99.2-100% of the detected vertices lie within one ring
-// of it; 28-30 of its 30 corners are found within two edge lengths, at most one spurious
-// corner; but lines break or join differently: 46-51 lines and 28-31 corners.
-TEST(SharpFeatures, FandiskWithThirtyPercentNoiseStaysNearTheNoiseFreeFeatures) {
+// The hard case, 30% noise (raw face normals off by ~28 degrees on average), against the true
+// creases and corners of the clean mesh.
+TEST(SharpFeatures, FandiskWithThirtyPercentNoiseFindsTheTrueCreases) {
   const test::ArrayMesh m = test::load_data_mesh("fandisk");
-  const std::vector<FeatureType> reference = detect(m.positions, m.faces);
-  const FeatureLines reference_lines = link_feature_lines(m.positions, m.faces, reference);
-  const double l = mean_edge_length(m.positions, m.faces);
-  std::vector<std::vector<int>> ring(m.vertices());
-  for (Eigen::Index f = 0; f < m.faces.rows(); ++f)
-    for (int k = 0; k < 3; ++k) ring[m.faces(f, k)].push_back(m.faces(f, (k + 1) % 3));
-  auto near = [&](const std::vector<FeatureType>& type, int v) {
-    if (type[v] != FeatureType::None) return true;
-    for (int w : ring[v])
-      if (type[w] != FeatureType::None) return true;
-    return false;
-  };
   for (unsigned seed : {1u, 2u, 3u}) {
     SCOPED_TRACE(seed);
     const Positions p = add_gaussian_noise(m.positions, m.faces, 30.0, NoiseDirection::Random, seed);
     const std::vector<FeatureType> type = detect(p, m.faces);
     const FeatureLines fl = link_feature_lines(p, m.faces, type);
     expect_well_formed(m.faces, type, fl);
-    int found = 0, kept = 0;
-    for (int v = 0; v < m.vertices(); ++v) {
-      if (reference[v] != FeatureType::None) found += near(type, v);
-      if (type[v] != FeatureType::None) kept += near(reference, v);
-    }
-    EXPECT_GE(found, 0.97 * count_features(reference));
-    EXPECT_GE(kept, 0.98 * count_features(type));
-    int corners = 0;
-    for (int c : reference_lines.corners) {
-      bool hit = false;
-      for (int d : fl.corners) hit = hit || (m.positions.row(c) - m.positions.row(d)).norm() < 2 * l;
-      corners += hit;
-    }
-    EXPECT_GE(corners, 27);
-    EXPECT_LE(fl.corners.size(), 31u);
+    // measured: 1-2 spurious and 0-3 missed corners, 692-701 of 712 crease vertices found,
+    // every detection within one ring of a crease
+    expect_corners_near_the_true_ones(m, fl, 2, 3);
+    expect_features_near_the_true_creases(m, type, 0.96, 0.99);
   }
 }
 

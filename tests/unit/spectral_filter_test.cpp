@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <complex>
-#include <random>
 #include <stdexcept>
 #include <vector>
 
@@ -63,16 +62,37 @@ Decomposed decompose(std::vector<double> signal) {
 // Periods 8, 64 and 512 samples: 0.125, 0.0156 and 0.00195 cycles per sample.
 const std::vector<double> kFast = tone(8.0), kMiddle = tone(64.0, 0.8, 0.7), kSlow = tone(512.0, 1.2, 2.1);
 
-TEST(SpectralFilter, GainOneIsAnExactRoundTrip) {
-  std::mt19937 rng(8);
-  std::normal_distribution<double> noise(0.0, 0.3);
-  std::vector<double> signal = sum({kFast, kMiddle, kSlow});
-  for (double& v : signal) v += noise(rng);
-  const Decomposed d = decompose(signal);
+// Every band, with gains that remove, attenuate and enhance: the expected output is built from
+// the known tones (the one whose frequency the band selects scaled by the gain, the others
+// kept), not from the decomposition.
+TEST(SpectralFilter, EveryBandWithNonUnitGains) {
+  const Decomposed d = decompose(sum({kFast, kMiddle, kSlow}));
   ASSERT_GE(d.emd.imfs.size(), 3u);
-  for (const FrequencyBand& band : {FrequencyBand{}, FrequencyBand{0.01, 0.2, false}, FrequencyBand{0.01, 0.2, true}}) {
-    const std::vector<double> out = hht::filter_by_frequency(d.emd, d.spectra, band, 1.0);
-    EXPECT_LT(max_abs_diff(out, signal), 1e-12 * max_abs(signal));
+  struct Case {
+    FrequencyBand band;
+    bool fast, middle, slow;  // which tones the band selects
+  };
+  const Case cases[] = {
+      {{0.05, 0.5, false}, true, false, false},   // high frequencies
+      {{0.0, 0.05, false}, false, true, true},    // low frequencies
+      {{0.01, 0.03, false}, false, true, false},  // inside
+      {{0.01, 0.03, true}, true, false, true},    // outside
+  };
+  for (const Case& c : cases) {
+    for (double gain : {0.0, 0.5, 3.0}) {
+      SCOPED_TRACE(testing::Message() << "band [" << c.band.low << ", " << c.band.high << "]"
+                                      << (c.band.outside ? " outside" : "") << ", gain " << gain);
+      auto scaled = [&](const std::vector<double>& x, bool selected) {
+        std::vector<double> y = x;
+        for (double& v : y) v *= selected ? gain : 1.0;
+        return y;
+      };
+      const std::vector<double> expected = sum({scaled(kFast, c.fast), scaled(kMiddle, c.middle), scaled(kSlow, c.slow)});
+      const std::vector<double> out = hht::filter_by_frequency(d.emd, d.spectra, c.band, gain);
+      // EMD's separation error on these tones times the largest weight: measured 6.2e-4 at
+      // gain 0, 1.25e-3 at gain 3
+      EXPECT_LT(max_abs_diff(out, expected), 1e-3 * std::max(1.0, gain));
+    }
   }
 }
 

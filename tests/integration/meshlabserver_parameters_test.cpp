@@ -1,0 +1,470 @@
+// Every parameter path of every filter through meshlabserver, each run's saved mesh compared
+// with the library called with the same options on the same input. MeshLab holds positions,
+// quality and parameters in float: the library gets the input rounded to float, float-rounded
+// parameter values, and the comparison allows for the float rounding of what was saved.
+#include "meshlabserver_harness.h"
+
+#include "bilateral_denoise.h"
+#include "cycle_decomposition.h"
+#include "denoise_metrics.h"
+#include "feature_preserving_denoise.h"
+#include "gaussian_noise.h"
+#include "mean_curvature.h"
+#include "spectral_mesh_filter.h"
+
+#include <gtest/gtest.h>
+#include <wrap/io_trimesh/export_ply.h>
+#include <wrap/io_trimesh/import_off.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+namespace hht::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Input {
+  Positions positions;  // as MeshLab holds them: rounded to float
+  Faces faces;
+  double diagonal = 0;
+};
+
+Input read_input(const std::string& name) {
+  TriMesh m;
+  EXPECT_EQ(vcg::tri::io::ImporterOFF<TriMesh>::Open(m, data_mesh(name).c_str()), 0);
+  Input in;
+  mesh_to_arrays(m, in.positions, in.faces);
+  in.positions = in.positions.cast<float>().cast<double>();
+  in.diagonal = (in.positions.colwise().maxCoeff() - in.positions.colwise().minCoeff()).norm();
+  return in;
+}
+
+double f(double value) { return static_cast<float>(value); }  // a parameter as MeshLab reads it
+
+Positions saved_positions(const ServerRun& run, Eigen::VectorXd* quality = nullptr) {
+  TriMesh m;
+  load(run, m);
+  Positions p;
+  Faces faces;
+  mesh_to_arrays(m, p, faces);
+  if (quality) {
+    quality->resize(m.vn);
+    for (int v = 0; v < m.vn; ++v) (*quality)[v] = m.vert[v].Q();
+  }
+  return p;
+}
+
+Eigen::VectorXd saved_quality(const ServerRun& run) {
+  Eigen::VectorXd q;
+  saved_positions(run, &q);
+  return q;
+}
+
+ServerRun run_script(const std::string& input, const std::string& resource_name,
+                     const std::vector<std::pair<std::string, std::string>>& overrides, const std::string& tag) {
+  return run_meshlabserver(input, chain_scripts(tag, {resource_name}, overrides), tag);
+}
+
+void expect_positions(const Positions& saved, const Positions& expected, double diagonal, const std::string& what) {
+  ASSERT_EQ(saved.rows(), expected.rows()) << what;
+  EXPECT_LT((saved - expected).rowwise().norm().maxCoeff(), 1e-6 * diagonal) << what;
+}
+
+void expect_values(const Eigen::VectorXd& saved, const Eigen::VectorXd& expected, const std::string& what) {
+  ASSERT_EQ(saved.size(), expected.size()) << what;
+  const double scale = std::max(1e-30, expected.cwiseAbs().maxCoeff());
+  EXPECT_LT((saved - expected).cwiseAbs().maxCoeff(), 1e-6 * scale) << what;
+  EXPECT_GT((expected.array() != 0).count(), expected.size() / 2) << what << ": mostly zeros proves little";
+}
+
+// ------------------------------------------------------------------------------ cycle
+
+TEST(MeshlabserverParameters, HamiltonianCycleSeedTriesRepair) {
+  const Input in = read_input("fandisk");
+  struct Case {
+    int seed, tries;
+    bool repair;
+  };
+  for (const Case c : {Case{3, 1, true}, Case{3, 3, true}, Case{11, 1, false}}) {
+    const std::string tag = "cycle_" + std::to_string(c.seed) + "_" + std::to_string(c.tries) + "_" + std::to_string(c.repair);
+    const ServerRun run = run_script(data_mesh("fandisk"), "hamiltonian_cycle.mlx",
+                                     {{"seed", std::to_string(c.seed)}, {"tries", std::to_string(c.tries)},
+                                      {"repair", c.repair ? "true" : "false"}}, tag);
+    CycleOptions o;
+    o.seed = c.seed;
+    o.tries = c.tries;
+    o.repair = c.repair;
+    HamiltonianCycle cycle;
+    std::string error;
+    ASSERT_TRUE(hamiltonian_cycle(in.faces, static_cast<int>(in.positions.rows()), o, cycle, error)) << error;
+    const Eigen::VectorXd quality = saved_quality(run);
+    ASSERT_EQ(quality.size(), in.positions.rows());
+    for (Eigen::Index v = 0; v < quality.size(); ++v) ASSERT_EQ(quality[v], cycle.position[v]) << tag << " vertex " << v;
+    EXPECT_NE(run.log.find(std::to_string(cycle.isolated) + " isolated"), std::string::npos) << run.log;
+  }
+}
+
+// The cycle layer, saved as OBJ with its edges, read back edge by edge: the cycle's steps.
+TEST(MeshlabserverParameters, CycleLayerEdgesAreTheCycle) {
+  const Input in = read_input("fandisk");
+  const std::string script = write_script("cycle_layer",
+      " <filter name=\"HHT: Hamiltonian Cycle\">\n"
+      "  <Param type=\"RichInt\" name=\"seed\" value=\"3\"/>\n"
+      "  <Param type=\"RichInt\" name=\"tries\" value=\"1\"/>\n"
+      "  <Param type=\"RichBool\" name=\"repair\" value=\"true\"/>\n"
+      "  <Param type=\"RichBool\" name=\"addCycleLayer\" value=\"true\"/>\n"
+      " </filter>\n"
+      " <filter name=\"Change the current layer\">\n"
+      "  <Param type=\"RichMesh\" name=\"layer\" value=\"1\"/>\n"
+      " </filter>\n");
+  const ServerRun run = run_meshlabserver(std::vector<std::string>{data_mesh("fandisk")}, script, "cycle_layer", ".obj");
+  ASSERT_EQ(run.exit_code, 0) << run.log;
+  CycleOptions o;
+  o.seed = 3;
+  HamiltonianCycle cycle;
+  std::string error;
+  ASSERT_TRUE(hamiltonian_cycle(in.faces, static_cast<int>(in.positions.rows()), o, cycle, error)) << error;
+  const ObjPolyline layer = read_obj_polyline(run.output);
+  ASSERT_EQ(layer.vertices.size(), cycle.order.size());
+  for (size_t i = 0; i < layer.vertices.size(); ++i)
+    ASSERT_LT((layer.vertices[i] - in.positions.row(cycle.order[i])).norm(), 1e-5 * in.diagonal) << "vertex " << i;
+  ASSERT_EQ(layer.edges.size(), cycle.order.size());
+  for (size_t i = 0; i < layer.edges.size(); ++i) {
+    EXPECT_EQ(layer.edges[i].first, static_cast<int>(i));
+    EXPECT_EQ(layer.edges[i].second, static_cast<int>((i + 1) % cycle.order.size()));
+  }
+}
+
+// ------------------------------------------------------------------------------ curvature
+
+TEST(MeshlabserverParameters, CurvatureColourRampClipsTheRequestedPercentile) {
+  const Input in = read_input("fandisk");
+  MeanCurvature h;
+  std::string error;
+  ASSERT_TRUE(mean_curvature(in.positions, in.faces, h, error));
+  for (int percentile : {2, 20}) {
+    TriMesh m;
+    load(run_script(data_mesh("fandisk"), "curvature_signal.mlx", {{"rampPercentile", std::to_string(percentile)}},
+                    "ramp_" + std::to_string(percentile)), m);
+    Eigen::VectorXd q(m.vn);
+    for (int v = 0; v < m.vn; ++v) q[v] = m.vert[v].Q();
+    expect_values(q, h.signal, "curvature");
+    // every vertex at or below the p-th percentile of G has the ramp's end colour
+    int lowest = 0;
+    for (int v = 0; v < m.vn; ++v)
+      if (q[v] < q[lowest]) lowest = v;
+    int saturated = 0;
+    for (const auto& v : m.vert) saturated += v.cC() == m.vert[lowest].cC();
+    EXPECT_NEAR(saturated, percentile / 100.0 * m.vn, 0.01 * m.vn) << percentile;
+  }
+}
+
+// ------------------------------------------------------------------------------ spectra
+
+// The library's per-vertex quantity for the spectra filter's options.
+Eigen::VectorXd library_quantity(const Input& in, const Eigen::VectorXd& signal, CycleQuantity what, int imf,
+                                 const CycleOptions& cycle_options = {}, const EmdOptions& emd_options = {}) {
+  HamiltonianCycle cycle;
+  CycleDecomposition d;
+  std::string error;
+  EXPECT_TRUE(hamiltonian_cycle(in.faces, static_cast<int>(in.positions.rows()), cycle_options, cycle, error)) << error;
+  EXPECT_TRUE(decompose_along_cycle(cycle, signal, emd_options, d, error)) << error;
+  compute_spectra(d);
+  return quantity_on_vertices(cycle, d, what, imf, in.faces);
+}
+
+TEST(MeshlabserverParameters, HilbertSpectraEveryOutputAndImf) {
+  const Input in = read_input("fandisk");
+  MeanCurvature h;
+  std::string error;
+  ASSERT_TRUE(mean_curvature(in.positions, in.faces, h, error));
+  const CycleQuantity outputs[] = {CycleQuantity::Imf, CycleQuantity::Amplitude, CycleQuantity::Frequency,
+                                   CycleQuantity::Phase, CycleQuantity::Residue};
+  for (int output = 0; output < 5; ++output)
+    for (int imf : {1, 3}) {
+      if (output == 4 && imf == 3) continue;  // the residue has no IMF number
+      const std::string tag = "spectra_" + std::to_string(output) + "_" + std::to_string(imf);
+      const ServerRun run = run_script(data_mesh("fandisk"), "hilbert_spectra.mlx",
+                                       {{"output", std::to_string(output)}, {"imf", std::to_string(imf)},
+                                        {"histogramFile", ""}}, tag);
+      expect_values(saved_quality(run), library_quantity(in, h.signal, outputs[output], imf - 1), tag);
+    }
+}
+
+TEST(MeshlabserverParameters, HilbertSpectraCycleAndEmdOptions) {
+  const Input in = read_input("fandisk");
+  MeanCurvature h;
+  std::string error;
+  ASSERT_TRUE(mean_curvature(in.positions, in.faces, h, error));
+  CycleOptions c;
+  c.seed = 9;
+  EmdOptions e;
+  e.sd_threshold = f(0.3);
+  e.max_sifts = 4;
+  e.min_extrema = 40;
+  e.max_imfs = 3;
+  const ServerRun run = run_script(data_mesh("fandisk"), "hilbert_spectra.mlx",
+                                   {{"output", "4"}, {"seed", "9"}, {"sdThreshold", "0.3"}, {"maxSifts", "4"},
+                                    {"minExtrema", "40"}, {"maxImfs", "3"}, {"histogramFile", ""}}, "spectra_options");
+  const Eigen::VectorXd expected = library_quantity(in, h.signal, CycleQuantity::Residue, 0, c, e);
+  expect_values(saved_quality(run), expected, "residue with options");
+  // the options matter: the default residue differs
+  EXPECT_GT((expected - library_quantity(in, h.signal, CycleQuantity::Residue, 0)).cwiseAbs().maxCoeff(),
+            1e-3 * expected.cwiseAbs().maxCoeff());
+}
+
+// The signal is a quality the input file carries (not G): the filter must analyse that.
+TEST(MeshlabserverParameters, HilbertSpectraOfAQualityThatIsNotG) {
+  const Input in = read_input("fandisk");
+  TriMesh m;
+  ASSERT_EQ(vcg::tri::io::ImporterOFF<TriMesh>::Open(m, data_mesh("fandisk").c_str()), 0);
+  Eigen::VectorXd signal(m.vn);
+  for (int v = 0; v < m.vn; ++v) {
+    const auto& p = m.vert[v].cP();
+    m.vert[v].Q() = static_cast<float>(std::sin(40.0 * p[0] / in.diagonal) + 0.3 * std::cos(300.0 * p[1] / in.diagonal));
+    signal[v] = m.vert[v].Q();
+  }
+  const std::string input = output_path("fandisk_with_quality.ply");
+  ASSERT_EQ(vcg::tri::io::ExporterPLY<TriMesh>::Save(m, input.c_str(), vcg::tri::io::Mask::IOM_VERTQUALITY, false), 0);
+  const ServerRun run = run_script(input, "hilbert_spectra.mlx",
+                                   {{"source", "1"}, {"output", "0"}, {"imf", "2"}, {"histogramFile", ""}}, "spectra_quality");
+  expect_values(saved_quality(run), library_quantity(in, signal, CycleQuantity::Imf, 1), "IMF 2 of the quality");
+}
+
+TEST(MeshlabserverParameters, HistogramFileAndBins) {
+  const Input in = read_input("fandisk");
+  MeanCurvature h;
+  std::string error;
+  ASSERT_TRUE(mean_curvature(in.positions, in.faces, h, error));
+  const ServerRun run = run_script(data_mesh("fandisk"), "hilbert_spectra.mlx",
+                                   {{"histogramFile", "histogram.png"}, {"bins", "20"}}, "histogram");
+  ASSERT_EQ(run.exit_code, 0) << run.log;
+  HamiltonianCycle cycle;
+  CycleDecomposition d;
+  ASSERT_TRUE(hamiltonian_cycle(in.faces, static_cast<int>(in.positions.rows()), {}, cycle, error));
+  ASSERT_TRUE(decompose_along_cycle(cycle, h.signal, {}, d, error));
+  compute_spectra(d);
+  const auto expected = frequency_distribution(d, 20);
+  std::ifstream csv(output_path("histogram.csv"));
+  std::string line;
+  std::getline(csv, line);  // header
+  int row = 0;
+  for (; std::getline(csv, line); ++row) {
+    std::stringstream cells(line);
+    std::string cell;
+    std::getline(cells, cell, ',');
+    EXPECT_NEAR(std::stod(cell), 0.5 * row / 20, 1e-9);
+    std::getline(cells, cell, ',');
+    for (size_t k = 0; k < expected.size(); ++k) {
+      ASSERT_TRUE(std::getline(cells, cell, ',')) << line;
+      EXPECT_NEAR(std::stod(cell), expected[k][row], 1e-4 * (1 + std::abs(expected[k][row]))) << "row " << row << " IMF " << k + 1;
+    }
+  }
+  EXPECT_EQ(row, 20);
+  EXPECT_GT(fs::file_size(output_path("histogram.png")), 1000u);
+}
+
+// ------------------------------------------------------------------------------ spectral filter
+
+struct FilterCase {
+  std::string tag;
+  std::vector<std::pair<std::string, std::string>> overrides;  // applied to enhance.mlx
+  SpectralMeshFilterOptions options;                            // the same, for the library
+};
+
+void PrintTo(const FilterCase& c, std::ostream* os) { *os << c.tag; }
+
+SpectralMeshFilterOptions enhance_script_options() {  // resources/enhance.mlx
+  SpectralMeshFilterOptions o;
+  o.band = {f(0.1), 0.5, false};
+  o.gain = 2;
+  o.cycles = 1;
+  o.reconstruction.lambda = f(0.1);
+  return o;
+}
+
+std::vector<FilterCase> filter_cases() {
+  std::vector<FilterCase> cases;
+  auto add = [&](const std::string& tag, std::vector<std::pair<std::string, std::string>> overrides,
+                 const std::function<void(SpectralMeshFilterOptions&)>& set) {
+    SpectralMeshFilterOptions o = enhance_script_options();
+    overrides.insert(overrides.begin(), {"cycles", "1"});  // a case's own value comes later and wins
+    o.cycles = 1;
+    set(o);
+    cases.push_back({tag, overrides, o});
+  };
+  add("band0", {{"band", "0"}, {"cutoff", "0.08"}, {"gain", "2.5"}},
+      [](auto& o) { o.band = {f(0.08), 0.5, false}; o.gain = 2.5; });
+  add("band1", {{"band", "1"}, {"cutoff", "0.03"}, {"gain", "0.5"}},
+      [](auto& o) { o.band = {0.0, f(0.03), false}; o.gain = 0.5; });
+  add("band2", {{"band", "2"}, {"lowFrequency", "0.02"}, {"highFrequency", "0.12"}, {"gain", "0"}},
+      [](auto& o) { o.band = {f(0.02), f(0.12), false}; o.gain = 0; });
+  add("band3", {{"band", "3"}, {"lowFrequency", "0.02"}, {"highFrequency", "0.12"}, {"gain", "0.25"}},
+      [](auto& o) { o.band = {f(0.02), f(0.12), true}; o.gain = 0.25; });
+  add("coarse", {{"coarseToFine", "true"}, {"coarsestImfs", "2"}},
+      [](auto& o) { o.keep_coarsest = true; o.coarsest = 2; });
+  add("literal", {{"literalTarget", "true"}, {"lambda", "0.05"}},
+      [](auto& o) { o.reconstruction.target = ReconstructionTarget::NormalOnly; o.reconstruction.lambda = f(0.05); });
+  add("emd", {{"seed", "4"}, {"sdThreshold", "0.2"}, {"maxSifts", "6"}, {"minExtrema", "30"}, {"maxImfs", "4"}},
+      [](auto& o) {
+        o.cycle.seed = 4;
+        o.emd.sd_threshold = f(0.2);
+        o.emd.max_sifts = 6;
+        o.emd.min_extrema = 30;
+        o.emd.max_imfs = 4;
+      });
+  add("cycles", {{"cycles", "3"}}, [](auto& o) { o.cycles = 3; });
+  return cases;
+}
+
+class SpectralFilterPath : public ::testing::TestWithParam<FilterCase> {};
+
+TEST_P(SpectralFilterPath, SavedMeshIsTheLibrarysResult) {
+  const FilterCase& c = GetParam();
+  const Input in = read_input("fandisk");
+  const ServerRun run = run_script(data_mesh("fandisk"), "enhance.mlx", c.overrides, c.tag);
+  Positions expected;
+  SpectralMeshFilterReport report;
+  std::string error;
+  ASSERT_TRUE(spectral_mesh_filter(in.positions, in.faces, c.options, expected, report, error)) << error;
+  EXPECT_GT(report.max_displacement, 1e-4 * in.diagonal) << "the case must move the mesh";
+  expect_positions(saved_positions(run), expected, in.diagonal, c.tag);
+  // the log reports the library's solve
+  EXPECT_NE(run.log.find(std::to_string(report.reconstruction.iterations) + " CG iterations"), std::string::npos) << run.log;
+  EXPECT_NE(run.log.find(std::to_string(report.imfs.size()) + " IMFs"), std::string::npos) << run.log;
+}
+
+INSTANTIATE_TEST_SUITE_P(Fandisk, SpectralFilterPath, ::testing::ValuesIn(filter_cases()),
+                         [](const auto& info) { return info.param.tag; });
+
+// ------------------------------------------------------------------------------ noise, bilateral
+
+TEST(MeshlabserverParameters, NoiseSigmaDirectionSeed) {
+  const Input in = read_input("fandisk");
+  const NoiseDirection directions[] = {NoiseDirection::Random, NoiseDirection::Normal, NoiseDirection::Isotropic};
+  for (int direction : {0, 1, 2}) {
+    const std::string tag = "noise_" + std::to_string(direction);
+    const ServerRun run = run_script(data_mesh("fandisk"), "add_noise.mlx",
+                                     {{"sigmaPercent", "7"}, {"direction", std::to_string(direction)}, {"seed", "5"}}, tag);
+    const Positions expected = add_gaussian_noise(in.positions, in.faces, f(7), directions[direction], 5);
+    expect_positions(saved_positions(run), expected, in.diagonal, tag);
+  }
+}
+
+TEST(MeshlabserverParameters, BilateralSigmasAndPasses) {
+  const Input in = read_input("fandisk");
+  const ServerRun run = run_script(data_mesh("fandisk"), "bilateral.mlx",
+                                   {{"sigmaC", "0.6"}, {"sigmaS", "0.05"}, {"passes", "3"}}, "bilateral");
+  BilateralOptions o;
+  o.sigma_c = f(0.6);
+  o.sigma_s = f(0.05);
+  o.passes = 3;
+  const Positions expected = bilateral_denoise(in.positions, in.faces, o);
+  EXPECT_GT((expected - in.positions).rowwise().norm().maxCoeff(), 1e-4 * in.diagonal);
+  expect_positions(saved_positions(run), expected, in.diagonal, "bilateral");
+}
+
+// ------------------------------------------------------------------------------ denoise
+
+TEST(MeshlabserverParameters, DenoiseOptions) {
+  const Input in = read_input("fandisk");
+  // a noisy input, written as MeshLab will read it
+  const Positions noisy = add_gaussian_noise(in.positions, in.faces, 5.0, NoiseDirection::Random, 2).cast<float>().cast<double>();
+  TriMesh m;
+  ASSERT_EQ(vcg::tri::io::ImporterOFF<TriMesh>::Open(m, data_mesh("fandisk").c_str()), 0);
+  for (int v = 0; v < m.vn; ++v) m.vert[v].P() = vcg::Point3d(noisy(v, 0), noisy(v, 1), noisy(v, 2));
+  const std::string input = output_path("fandisk_noisy.ply");
+  ASSERT_EQ(vcg::tri::io::ExporterPLY<TriMesh>::Save(m, input.c_str(), 0, true), 0);
+  struct Case {
+    std::string tag;
+    std::vector<std::pair<std::string, std::string>> overrides;
+    std::function<void(DenoiseOptions&)> set;
+  };
+  const Case cases[] = {
+      {"paper_stage", {{"paperStage", "true"}, {"noisePercent", "5"}, {"untangle", "false"}, {"refineRounds", "2"},
+                       {"featureAngle", "40"}, {"normalFilterIterations", "2"}, {"shortLinePasses", "3"}, {"cycles", "2"},
+                       {"cutoff", "0.08"}, {"lambda", "0.5"}, {"refineNormalPasses", "3"}, {"refineVertexIterations", "5"},
+                       {"showFeatures", "1"}},
+       [](DenoiseOptions& o) {
+         o.paper_stage = true;
+         o.noise = f(5) / 100.0;
+         o.untangle = false;
+         o.refine_rounds = 2;
+         o.features.angle_degrees = f(40);
+         o.features.filter_iterations = 2;
+         o.short_line_passes = 3;
+         o.cycles = 2;
+         o.cutoff = f(0.08);
+         o.reconstruction.lambda = f(0.5);
+         o.refine_normal_passes = 3;
+         o.refine_vertex_iterations = 5;
+       }},
+      {"paper_stage_only", {{"paperStage", "true"}, {"detectFeatures", "false"}, {"seed", "3"}, {"maxImfs", "3"},
+                            {"refineNormalPasses", "0"}},
+       [](DenoiseOptions& o) {
+         o.paper_stage = true;
+         o.detect_features = false;
+         o.cycle.seed = 3;
+         o.emd.max_imfs = 3;
+         o.refine_normal_passes = 0;
+       }},
+      {"default", {}, [](DenoiseOptions&) {}},
+  };
+  for (const Case& c : cases) {
+    DenoiseOptions o;  // denoise.mlx: the library's defaults
+    c.set(o);
+    Positions expected;
+    DenoiseReport report;
+    std::string error;
+    ASSERT_TRUE(feature_preserving_denoise(noisy, in.faces, o, expected, report, error)) << error;
+    const ServerRun run = run_script(input, "denoise.mlx", c.overrides, "denoise_" + c.tag);
+    expect_positions(saved_positions(run), expected, in.diagonal, c.tag);
+    if (c.tag == "paper_stage") {  // showFeatures 1: the feature vertices are selected
+      TriMesh saved;
+      load(run, saved);
+      int selected = 0;
+      for (int v = 0; v < saved.vn; ++v) {
+        EXPECT_EQ(saved.vert[v].IsS(), report.type[v] != FeatureType::None) << v;
+        selected += saved.vert[v].IsS();
+      }
+      EXPECT_EQ(selected, report.feature_vertices);
+    }
+    if (o.paper_stage && o.detect_features) {  // the log reports the library's detection and line processing
+      EXPECT_NE(run.log.find("features: " + std::to_string(report.feature_vertices) + " vertices"), std::string::npos) << run.log;
+      EXPECT_NE(run.log.find(std::to_string(report.lines_by_emd) + " lines by EMD"), std::string::npos) << run.log;
+    }
+  }
+}
+
+// ------------------------------------------------------------------------------ compare
+
+TEST(MeshlabserverParameters, CompareTwoDifferentMeshesEveryOutput) {
+  const Input in = read_input("fandisk");
+  const Positions noisy = add_gaussian_noise(in.positions, in.faces, 10.0, NoiseDirection::Random, 4).cast<float>().cast<double>();
+  TriMesh m;
+  ASSERT_EQ(vcg::tri::io::ImporterOFF<TriMesh>::Open(m, data_mesh("fandisk").c_str()), 0);
+  for (int v = 0; v < m.vn; ++v) m.vert[v].P() = vcg::Point3d(noisy(v, 0), noisy(v, 1), noisy(v, 2));
+  const std::string result = output_path("fandisk_noisy.ply");
+  ASSERT_EQ(vcg::tri::io::ExporterPLY<TriMesh>::Save(m, result.c_str(), 0, true), 0);
+  for (int per_vertex : {0, 1}) {
+    const std::string tag = "compare_" + std::to_string(per_vertex);
+    const ServerRun run = run_meshlabserver(std::vector<std::string>{data_mesh("fandisk"), result},
+                                            chain_scripts(tag, {"compare.mlx"}, {{"perVertex", std::to_string(per_vertex)}}), tag);
+    const Eigen::VectorXd expected = per_vertex ? vertex_normal_error_degrees(noisy, in.positions, in.faces)
+                                                : vertex_distance_to_reference(noisy, in.positions, in.faces);
+    expect_values(saved_quality(run), expected, tag);
+    std::smatch ea, ev;
+    ASSERT_TRUE(std::regex_search(run.log, ea, std::regex("E_a = ([0-9.eE+-]+)"))) << run.log;
+    ASSERT_TRUE(std::regex_search(run.log, ev, std::regex("E_v = ([0-9.eE+-]+)"))) << run.log;
+    const double expected_ea = mean_face_normal_error_degrees(noisy, in.positions, in.faces);
+    const double expected_ev = mean_distance_to_reference(noisy, in.positions, in.faces);
+    EXPECT_GT(expected_ea, 1.0);
+    EXPECT_NEAR(std::stod(ea[1]), expected_ea, 1e-4 * expected_ea);
+    EXPECT_NEAR(std::stod(ev[1]), expected_ev, 1e-3 * expected_ev);
+  }
+}
+
+}  // namespace
+}  // namespace hht::test
