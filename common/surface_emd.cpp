@@ -274,7 +274,7 @@ bool surface_emd(const Positions& positions, const Faces& faces, const Eigen::Ve
         s[v] -= mean;
       }
       ++sifts;
-        if ((before > 0.0 ? change / before : 0.0) < options.sd_threshold) break;
+      if ((before > 0.0 ? change / before : 0.0) < options.sd_threshold) break;
     }
     r -= s;
     result.imfs.push_back(std::move(s));
