@@ -3,8 +3,9 @@
 #include "cotangent_laplacian.h"
 #include "mesh_checks.h"
 
-#include <Eigen/CholmodSupport>
 #include <Eigen/Sparse>
+
+#include <cholmod.h>
 
 #include <algorithm>
 #include <chrono>
@@ -22,10 +23,30 @@ using Clock = std::chrono::steady_clock;
 
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
+// The lower triangle of a symmetric Eigen matrix, as CHOLMOD reads it (no copy).
+cholmod_sparse view(Sparse& m) {
+  cholmod_sparse s{};
+  s.nrow = static_cast<size_t>(m.rows());
+  s.ncol = static_cast<size_t>(m.cols());
+  s.nzmax = static_cast<size_t>(m.nonZeros());
+  s.p = m.outerIndexPtr();
+  s.i = m.innerIndexPtr();
+  s.x = m.valuePtr();
+  s.stype = -1;
+  s.itype = CHOLMOD_INT;
+  s.xtype = CHOLMOD_REAL;
+  s.dtype = CHOLMOD_DOUBLE;
+  s.sorted = 1;
+  s.packed = 1;
+  return s;
+}
+
 // (value, index) ordering: a strict total order, so ties cannot hide every extremum.
 inline bool above(double a, int i, double b, int j) { return a > b || (a == b && i > j); }
 
-// The bi-harmonic envelope through a changing set of constrained vertices (see the header).
+// The bi-harmonic envelope through a changing set of constrained vertices (see the header), with
+// CHOLMOD's own interface: one analysis, copied to the second envelope's solver, and numeric
+// refactorisations into the same factor.
 class EnvelopeSolver {
  public:
   explicit EnvelopeSolver(const Sparse& a) : a_(a), k_(a) {
@@ -35,20 +56,46 @@ class EnvelopeSolver {
       const double d = a.coeff(j, j);
       diagonal_[j] = d > 0.0 ? d : 1.0;  // vertices of no face: any positive scale
     }
+    cholmod_start(&common_);
+  }
+  EnvelopeSolver(const EnvelopeSolver&) = delete;
+  EnvelopeSolver& operator=(const EnvelopeSolver&) = delete;
+  ~EnvelopeSolver() {
+    if (factor_ != nullptr) cholmod_free_factor(&factor_, &common_);
+    cholmod_finish(&common_);
   }
 
-  // Symbolic analysis, once: the pattern of every system is a_'s.
-  double analyse() {
-    const auto t0 = Clock::now();
-    factor_.analyzePattern(k_);
-    return since(t0);
+  // Symbolic analysis of the (fixed) pattern: AMD and METIS orderings are both tried and the one
+  // with less fill kept (METIS halves the fill on meshes of 100k vertices and more).
+  bool analyse() {
+    common_.nmethods = 2;
+    common_.method[0].ordering = CHOLMOD_AMD;
+    common_.method[1].ordering = CHOLMOD_METIS;
+    cholmod_sparse k = view(k_);
+    factor_ = cholmod_analyze(&k, &common_);
+    return factor_ != nullptr;
+  }
+
+  bool copy_analysis(EnvelopeSolver& from) {
+    factor_ = cholmod_copy_factor(from.factor_, &common_);
+    return factor_ != nullptr;
   }
 
   bool solve(const std::vector<unsigned char>& constrained, const Eigen::VectorXd& s, Eigen::VectorXd& envelope) {
     assemble(constrained, s);
-    factor_.factorize(k_);  // numeric only: the symbolic factor of analyse() is reused
-    if (factor_.info() != Eigen::Success) return false;
-    envelope = factor_.solve(b_);
+    cholmod_sparse k = view(k_);
+    if (!cholmod_factorize(&k, factor_, &common_) || common_.status < CHOLMOD_OK || factor_->minor < factor_->n)
+      return false;
+    cholmod_dense b{};
+    b.nrow = b.nzmax = b.d = static_cast<size_t>(b_.size());
+    b.ncol = 1;
+    b.x = b_.data();
+    b.xtype = CHOLMOD_REAL;
+    b.dtype = CHOLMOD_DOUBLE;
+    cholmod_dense* x = cholmod_solve(CHOLMOD_A, factor_, &b, &common_);
+    if (x == nullptr) return false;
+    envelope = Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(x->x), b_.size());
+    cholmod_free_dense(&x, &common_);
     for (Eigen::Index i = 0; i < s.size(); ++i)
       if (constrained[i]) envelope[i] = s[i];  // exact at the constraints
     return envelope.allFinite();
@@ -83,7 +130,8 @@ class EnvelopeSolver {
   const Sparse& a_;
   Sparse k_;
   Eigen::VectorXd diagonal_, b_;
-  Eigen::CholmodDecomposition<Sparse, Eigen::Lower> factor_;
+  cholmod_common common_;
+  cholmod_factor* factor_ = nullptr;
 };
 
 bool check_faces(const Faces& faces, int n, std::string& error) {
@@ -212,7 +260,12 @@ bool surface_emd(const Positions& positions, const Faces& faces, const Eigen::Ve
   a.makeCompressed();
 
   EnvelopeSolver upper(a), lower(a);
-  result.report.analysis_seconds = upper.analyse() + lower.analyse();
+  const auto analysis_start = Clock::now();
+  if (!upper.analyse() || !lower.copy_analysis(upper)) {
+    error = "the analysis of the bi-harmonic envelope system failed (out of memory?)";
+    return false;
+  }
+  result.report.analysis_seconds = since(analysis_start);
 
   const int min_extrema = std::max(options.min_extrema, 1);
   const int max_sifts = std::max(options.max_sifts, 1);

@@ -17,8 +17,9 @@
 // Solver (the baseline should be as fast as honestly possible): the constrained system is kept
 // at full size with the constrained rows and columns replaced by their diagonal entry (and the
 // right-hand side by diagonal * value), so that its sparsity pattern never changes: CHOLMOD's
-// symbolic analysis (fill-reducing ordering, supernodes) is done once per envelope for the whole
-// decomposition, and each envelope costs one numeric factorisation and one solve. The two
+// symbolic analysis (the better of AMD and METIS orderings, supernodes) is done once for the
+// whole decomposition and copied to the second envelope's factor, and each envelope costs one
+// numeric factorisation and one solve. The two
 // envelopes of a sift are solved on two threads (threads >= 2), as the 1D EMD fits its two
 // splines (emd.h). Tried and dropped: conjugate gradients preconditioned with the previous
 // sift's factor (the systems differ by a term of rank <= 2 x the changed extrema): on Fandisk it
@@ -52,7 +53,7 @@ struct SurfaceEmdOptions {
 
 struct SurfaceEmdReport {
   int factorizations = 0;       // numeric factorisations, two per sift
-  double analysis_seconds = 0;  // the two symbolic analyses, once per decomposition
+  double analysis_seconds = 0;  // the symbolic analysis, once per decomposition (copied to the other envelope)
 };
 
 struct SurfaceEmdResult {
