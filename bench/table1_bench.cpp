@@ -119,12 +119,12 @@ int main(int argc, char** argv) {
       std::fprintf(stderr, "%s: smoothing: %s\n", path, error.c_str());
       return 1;
     }
-    std::printf("| %s | %lld | %d / %d | %d | %.2f | %.3f | %.2f | %.0fx | %.0fx |", path,
+    std::printf("| %s | %lld | %d / %d | %d | %.2f | %.3f | %.2f | %.1fx | %.1fx |", path,
                 static_cast<long long>(positions.rows()), imfs, timed.imfs, timed.isolated, emd3d, timed.seconds, whole,
                 emd3d / timed.seconds, emd3d / whole);
     std::fflush(stdout);
     if (paper != nullptr) {
-      std::printf(" %d | %d | %d | %.2f | %.2f | %.2f | %.0fx | %.0fx |\n", paper->vertices, paper->imfs, paper->isolated,
+      std::printf(" %d | %d | %d | %.2f | %.2f | %.2f | %.1fx | %.1fx |\n", paper->vertices, paper->imfs, paper->isolated,
                   paper->emd3d, paper->emd1d, paper->total, paper->emd3d / paper->emd1d, paper->emd3d / paper->total);
     } else {
       std::printf(" | | | | | | | |\n");
