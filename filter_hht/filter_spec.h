@@ -46,5 +46,8 @@ FilterSpec compare_filter();
 FilterSpec bilateral_filter();
 FilterSpec adaptive_smooth_filter();
 FilterSpec guided_denoise_filter();
+FilterSpec surface_emd_filter();
+FilterSpec feature_centric_emd_filter();
+FilterSpec nonlocal_means_filter();
 
 }  // namespace hht_plugin

@@ -1,12 +1,21 @@
 #!/usr/bin/env bash
-# Makes the large benchmark meshes: armadillo (26k vertices) Loop-subdivided 1, 2 and 3 times
-# through meshlabserver (104k, 416k, 1.66M vertices), into data/bench/. Skips what exists.
+# Makes the large benchmark meshes, Loop-subdivided through meshlabserver into data/bench/:
+# armadillo (26k vertices) 1, 2 and 3 times (104k, 416k, 1.66M vertices), and the meshes near
+# the sizes of the paper's Table 1 (bench/table1_bench.cpp): man once (70k), lion twice (119k),
+# lion-head twice (133k), refined_elephant twice (711k). Skips what exists. Arguments (e.g.
+# man:1) make only those name:iterations.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 mkdir -p "$ROOT/data/bench"
-for k in 1 2 3; do
-  out="$ROOT/data/bench/armadillo_loop$k.ply"
+JOBS=(armadillo:1 armadillo:2 armadillo:3 man:1 lion:2 lion-head:2 refined_elephant:2)
+[ $# -eq 0 ] || JOBS=("$@")
+for job in "${JOBS[@]}"; do
+  name="${job%%:*}"; k="${job##*:}"
+  out="$ROOT/data/bench/${name}_loop$k.ply"
   [ -s "$out" ] && continue
+  if [ ! -s "$ROOT/data/$name.off" ]; then
+    tar -xzf /usr/share/doc/libcgal-dev/data.tar.gz -C "$ROOT/data" --strip-components=2 "data/meshes/$name.off"
+  fi
   script="$ROOT/data/bench/loop$k.mlx"
   cat > "$script" <<MLX
 <!DOCTYPE FilterScript>
@@ -19,6 +28,6 @@ for k in 1 2 3; do
  </filter>
 </FilterScript>
 MLX
-  xvfb-run -a -s "-screen 0 800x600x24" meshlabserver -i "$ROOT/data/armadillo.off" -o "$out" -s "$script" >/dev/null 2>&1
+  xvfb-run -a -s "-screen 0 800x600x24" meshlabserver -i "$ROOT/data/$name.off" -o "$out" -s "$script" >/dev/null 2>&1
   echo "[bench] $out"
 done

@@ -1,0 +1,62 @@
+// "Non-Local Means Denoising" after Yoshizawa, Belyaev & Seidel 2006 (the paper's ref. [32]).
+#include "filter_spec.h"
+#include "mesh_adapter.h"
+
+#include "nonlocal_means_denoise.h"
+
+namespace hht_plugin {
+
+namespace {
+
+void declare(const MeshDocument&, RichParameterList& p) {
+  const hht::NonLocalMeansOptions d;
+  p.addParam(RichFloat("eta1", float(d.eta1), "eta1: search radius (x mean edge length)",
+                       "Neighbours within this distance take part; the spatial Gaussian falls to e^-2 there "
+                       "(paper's torus: 3)."));
+  p.addParam(RichFloat("eta2", float(d.eta2), "eta2: similarity width (x mean edge length)",
+                       "Width of the weight on the difference of the two vertices' neighbourhoods (paper's torus: "
+                       "1.3)."));
+  p.addParam(RichFloat("eta3", float(d.eta3), "eta3: stencil spacing (x mean edge length)",
+                       "Ring spacing of the neighbourhood compared (paper's torus: 1.0)."));
+  p.addParam(RichInt("iterations", d.iterations, "Iterations", "Passes, normals recomputed each time."));
+}
+
+bool apply(FilterRun& run) {
+  MeshModel& model = *run.document.mm();
+  hht::Positions positions;
+  hht::Faces faces;
+  if (!read_triangle_mesh(model.cm, positions, faces, run.error)) return false;
+  hht::NonLocalMeansOptions o;
+  o.eta1 = run.parameters.getFloat("eta1");
+  o.eta2 = run.parameters.getFloat("eta2");
+  o.eta3 = run.parameters.getFloat("eta3");
+  o.iterations = run.parameters.getInt("iterations");
+  if (!(o.eta1 > 0) || !(o.eta2 > 0) || !(o.eta3 > 0) || o.iterations < 0) {
+    run.error = "Nothing was changed: eta1, eta2 and eta3 must be positive and iterations at least 0.";
+    return false;
+  }
+  Stopwatch clock;
+  run.report(10, "Non-local means denoising");
+  move_vertices(model, hht::nonlocal_means_denoise(positions, faces, o));
+  run.log(QString("Non-local means denoising: eta1 %1, eta2 %2, eta3 %3 (x mean edge length), %4 iterations; %5 s")
+              .arg(o.eta1).arg(o.eta2).arg(o.eta3).arg(o.iterations).arg(clock.seconds(), 0, 'f', 3));
+  return true;
+}
+
+}  // namespace
+
+FilterSpec nonlocal_means_filter() {
+  return {"Non-Local Means Denoising",
+          "Mesh denoising after <i>Yoshizawa, Belyaev and Seidel</i>, <b>Smoothing by example: mesh denoising by "
+          "averaging with similarity-based weights</b>, SMI 2006: each vertex moves along its normal by a weighted "
+          "mean of its neighbours' offsets, the weights combining distance (eta1) and the similarity of the two "
+          "vertices' neighbourhoods (eta2, compared over rings spaced eta3), all in mean edge lengths. The formulas "
+          "chosen are in common/nonlocal_means_denoise.h.",
+          MeshLabFilter::Smoothing,
+          MeshLabFilter::SINGLE_MESH,
+          MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL,
+          declare,
+          apply};
+}
+
+}  // namespace hht_plugin
