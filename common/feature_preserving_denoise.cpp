@@ -198,8 +198,8 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
 
   report.refine_rounds = options.refine_rounds > 0
                              ? options.refine_rounds
-                             : std::max(1, static_cast<int>(std::lround(sigma / kNoisePerRound)));
-  if (options.refine_normal_passes > 0 && options.refine_vertex_iterations > 0) {
+                             : static_cast<int>(std::lround(sigma / kNoisePerRound));
+  if (report.refine_rounds > 0 && options.refine_normal_passes > 0 && options.refine_vertex_iterations > 0) {
     step(90, "Refinement: guided normal filtering and vertex update");
     GuidedNormalDenoiseOptions refine;
     refine.rounds = report.refine_rounds;

@@ -16,7 +16,8 @@
 //    normal filter repairs; when more than kTangledShare of the faces point away from those of the
 //    noise-adaptive smoothing (noise_adaptive_smoothing.h), the smoothed mesh is the start;
 //  - refinement: face normals cleaned by guided normal filtering, which keeps creases, and the
-//    vertices fitted to them (Sun et al. 2007), in rounds whose number the noise sets
+//    vertices fitted to them (Sun et al. 2007), in rounds whose number the noise sets (none
+//    below 5% of the mean edge)
 //    (guided_normal_denoise.h);
 //  - the paper's HHT stage above is off by default (paper_stage): measured, it makes the result
 //    worse than the refinement alone on most cases (docs/quality.md).
@@ -31,7 +32,9 @@ namespace hht {
 
 // Share of faces flipped against the smoothed mesh above which the denoiser starts from it.
 constexpr double kTangledShare = 0.0075;
-// Noise (sigma / mean edge) per refinement round: rounds = max(1, round(sigma / this)).
+// Noise (sigma / mean edge) per refinement round: rounds = round(sigma / this), so a mesh with
+// less than half a round's noise (a clean one) is not refined: the guided filter would facet
+// its curved parts (clean homer: 9.2 degrees with one round).
 constexpr double kNoisePerRound = 0.1;
 
 struct DenoiseOptions {
@@ -50,7 +53,7 @@ struct DenoiseOptions {
     o.lambda = 1.0;
     return o;
   }();
-  int refine_rounds = 0;              // 0: set by the noise (kNoisePerRound)
+  int refine_rounds = 0;              // 0: set by the noise (kNoisePerRound); none below half a round
   int refine_normal_passes = 8;       // guided normal filtering passes per round; 0: no refinement
   double refine_normal_sigma = 0.25;  // range width of that filter, on unit normals (~15 degrees)
   int refine_vertex_iterations = 20;  // vertex update iterations towards the filtered normals

@@ -118,8 +118,14 @@ TEST(FeaturePreservingDenoise, CleanInputStaysClean) {
   DenoiseReport report;
   const Positions out = denoise(m.positions, m.faces, {}, &report);
   EXPECT_FALSE(report.untangled);
-  EXPECT_EQ(report.refine_rounds, 1);
+  EXPECT_EQ(report.refine_rounds, std::lround(report.sigma_used / kNoisePerRound));
   EXPECT_LT(mean_face_normal_error_degrees(out, m.positions, m.faces), 1.0);
+  // a smooth clean surface shows no noise and is left exactly as it is
+  const test::ArrayMesh sphere = test::sphere(4);
+  DenoiseOptions plain;
+  plain.detect_features = false;
+  EXPECT_EQ(denoise(sphere.positions, sphere.faces, plain, &report), sphere.positions);
+  EXPECT_EQ(report.refine_rounds, 0);
 }
 
 }  // namespace
