@@ -62,7 +62,7 @@ Eigen::VectorXd saved_quality(const ServerRun& run) {
   return q;
 }
 
-ServerRun run_script(const std::string& input, const std::string& resource_name,
+ServerRun run_resource(const std::string& input, const std::string& resource_name,
                      const std::vector<std::pair<std::string, std::string>>& overrides, const std::string& tag) {
   return run_meshlabserver(input, chain_scripts(tag, {resource_name}, overrides), tag);
 }
@@ -89,7 +89,7 @@ TEST(MeshlabserverParameters, HamiltonianCycleSeedTriesRepair) {
   };
   for (const Case c : {Case{3, 1, true}, Case{3, 3, true}, Case{11, 1, false}}) {
     const std::string tag = "cycle_" + std::to_string(c.seed) + "_" + std::to_string(c.tries) + "_" + std::to_string(c.repair);
-    const ServerRun run = run_script(data_mesh("fandisk"), "hamiltonian_cycle.mlx",
+    const ServerRun run = run_resource(data_mesh("fandisk"), "hamiltonian_cycle.mlx",
                                      {{"seed", std::to_string(c.seed)}, {"tries", std::to_string(c.tries)},
                                       {"repair", c.repair ? "true" : "false"}}, tag);
     CycleOptions o;
@@ -119,7 +119,7 @@ TEST(MeshlabserverParameters, CycleLayerEdgesAreTheCycle) {
       " <filter name=\"Change the current layer\">\n"
       "  <Param type=\"RichMesh\" name=\"layer\" value=\"1\"/>\n"
       " </filter>\n");
-  const ServerRun run = run_meshlabserver(std::vector<std::string>{data_mesh("fandisk")}, script, "cycle_layer", ".obj");
+  const ServerRun run = run_script(MeshLab::V2020, {data_mesh("fandisk")}, script, "cycle_layer", ".obj");
   ASSERT_EQ(run.exit_code, 0) << run.log;
   CycleOptions o;
   o.seed = 3;
@@ -146,7 +146,7 @@ TEST(MeshlabserverParameters, CurvatureColourRampClipsTheRequestedPercentile) {
   ASSERT_TRUE(mean_curvature(in.positions, in.faces, h, error));
   for (int percentile : {2, 20}) {
     TriMesh m;
-    load(run_script(data_mesh("fandisk"), "curvature_signal.mlx", {{"rampPercentile", std::to_string(percentile)}},
+    load(run_resource(data_mesh("fandisk"), "curvature_signal.mlx", {{"rampPercentile", std::to_string(percentile)}},
                     "ramp_" + std::to_string(percentile)), m);
     Eigen::VectorXd q(m.vn);
     for (int v = 0; v < m.vn; ++v) q[v] = m.vert[v].Q();
@@ -186,7 +186,7 @@ TEST(MeshlabserverParameters, HilbertSpectraEveryOutputAndImf) {
     for (int imf : {1, 3}) {
       if (output == 4 && imf == 3) continue;  // the residue has no IMF number
       const std::string tag = "spectra_" + std::to_string(output) + "_" + std::to_string(imf);
-      const ServerRun run = run_script(data_mesh("fandisk"), "hilbert_spectra.mlx",
+      const ServerRun run = run_resource(data_mesh("fandisk"), "hilbert_spectra.mlx",
                                        {{"output", std::to_string(output)}, {"imf", std::to_string(imf)},
                                         {"histogramFile", ""}}, tag);
       expect_values(saved_quality(run), library_quantity(in, h.signal, outputs[output], imf - 1), tag);
@@ -205,7 +205,7 @@ TEST(MeshlabserverParameters, HilbertSpectraCycleAndEmdOptions) {
   e.max_sifts = 4;
   e.min_extrema = 40;
   e.max_imfs = 3;
-  const ServerRun run = run_script(data_mesh("fandisk"), "hilbert_spectra.mlx",
+  const ServerRun run = run_resource(data_mesh("fandisk"), "hilbert_spectra.mlx",
                                    {{"output", "4"}, {"seed", "9"}, {"sdThreshold", "0.3"}, {"maxSifts", "4"},
                                     {"minExtrema", "40"}, {"maxImfs", "3"}, {"histogramFile", ""}}, "spectra_options");
   const Eigen::VectorXd expected = library_quantity(in, h.signal, CycleQuantity::Residue, 0, c, e);
@@ -228,7 +228,7 @@ TEST(MeshlabserverParameters, HilbertSpectraOfAQualityThatIsNotG) {
   }
   const std::string input = output_path("fandisk_with_quality.ply");
   ASSERT_EQ(vcg::tri::io::ExporterPLY<TriMesh>::Save(m, input.c_str(), vcg::tri::io::Mask::IOM_VERTQUALITY, false), 0);
-  const ServerRun run = run_script(input, "hilbert_spectra.mlx",
+  const ServerRun run = run_resource(input, "hilbert_spectra.mlx",
                                    {{"source", "1"}, {"output", "0"}, {"imf", "2"}, {"histogramFile", ""}}, "spectra_quality");
   expect_values(saved_quality(run), library_quantity(in, signal, CycleQuantity::Imf, 1), "IMF 2 of the quality");
 }
@@ -238,7 +238,7 @@ TEST(MeshlabserverParameters, HistogramFileAndBins) {
   MeanCurvature h;
   std::string error;
   ASSERT_TRUE(mean_curvature(in.positions, in.faces, h, error));
-  const ServerRun run = run_script(data_mesh("fandisk"), "hilbert_spectra.mlx",
+  const ServerRun run = run_resource(data_mesh("fandisk"), "hilbert_spectra.mlx",
                                    {{"histogramFile", "histogram.png"}, {"bins", "20"}}, "histogram");
   ASSERT_EQ(run.exit_code, 0) << run.log;
   HamiltonianCycle cycle;
@@ -324,7 +324,7 @@ class SpectralFilterPath : public ::testing::TestWithParam<FilterCase> {};
 TEST_P(SpectralFilterPath, SavedMeshIsTheLibrarysResult) {
   const FilterCase& c = GetParam();
   const Input in = read_input("fandisk");
-  const ServerRun run = run_script(data_mesh("fandisk"), "enhance.mlx", c.overrides, c.tag);
+  const ServerRun run = run_resource(data_mesh("fandisk"), "enhance.mlx", c.overrides, c.tag);
   Positions expected;
   SpectralMeshFilterReport report;
   std::string error;
@@ -346,7 +346,7 @@ TEST(MeshlabserverParameters, NoiseSigmaDirectionSeed) {
   const NoiseDirection directions[] = {NoiseDirection::Random, NoiseDirection::Normal, NoiseDirection::Isotropic};
   for (int direction : {0, 1, 2}) {
     const std::string tag = "noise_" + std::to_string(direction);
-    const ServerRun run = run_script(data_mesh("fandisk"), "add_noise.mlx",
+    const ServerRun run = run_resource(data_mesh("fandisk"), "add_noise.mlx",
                                      {{"sigmaPercent", "7"}, {"direction", std::to_string(direction)}, {"seed", "5"}}, tag);
     const Positions expected = add_gaussian_noise(in.positions, in.faces, f(7), directions[direction], 5);
     expect_positions(saved_positions(run), expected, in.diagonal, tag);
@@ -355,7 +355,7 @@ TEST(MeshlabserverParameters, NoiseSigmaDirectionSeed) {
 
 TEST(MeshlabserverParameters, BilateralSigmasAndPasses) {
   const Input in = read_input("fandisk");
-  const ServerRun run = run_script(data_mesh("fandisk"), "bilateral.mlx",
+  const ServerRun run = run_resource(data_mesh("fandisk"), "bilateral.mlx",
                                    {{"sigmaC", "0.6"}, {"sigmaS", "0.05"}, {"passes", "3"}}, "bilateral");
   BilateralOptions o;
   o.sigma_c = f(0.6);
@@ -419,7 +419,7 @@ TEST(MeshlabserverParameters, DenoiseOptions) {
     DenoiseReport report;
     std::string error;
     ASSERT_TRUE(feature_preserving_denoise(noisy, in.faces, o, expected, report, error)) << error;
-    const ServerRun run = run_script(input, "denoise.mlx", c.overrides, "denoise_" + c.tag);
+    const ServerRun run = run_resource(input, "denoise.mlx", c.overrides, "denoise_" + c.tag);
     expect_positions(saved_positions(run), expected, in.diagonal, c.tag);
     if (c.tag == "paper_stage") {  // showFeatures 1: the feature vertices are selected
       TriMesh saved;
@@ -450,8 +450,8 @@ TEST(MeshlabserverParameters, CompareTwoDifferentMeshesEveryOutput) {
   ASSERT_EQ(vcg::tri::io::ExporterPLY<TriMesh>::Save(m, result.c_str(), 0, true), 0);
   for (int per_vertex : {0, 1}) {
     const std::string tag = "compare_" + std::to_string(per_vertex);
-    const ServerRun run = run_meshlabserver(std::vector<std::string>{data_mesh("fandisk"), result},
-                                            chain_scripts(tag, {"compare.mlx"}, {{"perVertex", std::to_string(per_vertex)}}), tag);
+    const ServerRun run = run_script(MeshLab::V2020, {data_mesh("fandisk"), result},
+                                     chain_scripts(tag, {"compare.mlx"}, {{"perVertex", std::to_string(per_vertex)}}), tag);
     const Eigen::VectorXd expected = per_vertex ? vertex_normal_error_degrees(noisy, in.positions, in.faces)
                                                 : vertex_distance_to_reference(noisy, in.positions, in.faces);
     expect_values(saved_quality(run), expected, tag);

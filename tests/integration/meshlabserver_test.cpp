@@ -156,7 +156,7 @@ TEST_P(ShippedScript, RunsOnFandisk) {
     inputs.push_back(output_path("fandisk_noisy.ply"));
     ASSERT_EQ(vcg::tri::io::ExporterPLY<TriMesh>::Save(mesh, inputs.back().c_str(), 0, false), 0);
   }
-  const ServerRun run = run_meshlabserver(inputs, GetParam(), "script_" + stem);
+  const ServerRun run = run_script(MeshLab::V2020, inputs, GetParam(), "script_" + stem);
   EXPECT_EQ(run.log.find("failed"), std::string::npos) << run.log;
   TriMesh out;
   load(run, out);
