@@ -1,6 +1,7 @@
 #include "feature_preserving_denoise.h"
 
 #include "mesh_checks.h"
+#include "gaussian_noise.h"
 #include "guided_normal_denoise.h"
 #include "normal_vertex_update.h"
 
@@ -196,18 +197,34 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
   result = start;
   if (options.paper_stage && !paper_stage(start, faces, options, result, report, clock, step, error)) return false;
 
-  report.refine_rounds = options.refine_rounds > 0
-                             ? options.refine_rounds
-                             : static_cast<int>(std::lround(sigma / kNoisePerRound));
-  if (report.refine_rounds > 0 && options.refine_normal_passes > 0 && options.refine_vertex_iterations > 0) {
+  // Below half a round's noise, one round with passes in proportion to the noise: light noise
+  // (Fandisk at 5%) is still cleaned, a clean curved mesh is not faceted.
+  int normal_passes = options.refine_normal_passes;
+  report.refine_rounds = options.refine_rounds;
+  if (report.refine_rounds <= 0) {
+    report.refine_rounds = std::max(1, static_cast<int>(std::lround(sigma / kNoisePerRound)));
+    if (sigma < 0.5 * kNoisePerRound)
+      normal_passes = static_cast<int>(std::lround(normal_passes * sigma / (0.5 * kNoisePerRound)));
+  }
+  report.refine_normal_passes = normal_passes;
+  if (normal_passes > 0 && options.refine_vertex_iterations > 0) {
     step(90, "Refinement: guided normal filtering and vertex update");
     GuidedNormalDenoiseOptions refine;
     refine.rounds = report.refine_rounds;
-    refine.normal_passes = options.refine_normal_passes;
+    refine.normal_passes = normal_passes;
     refine.sigma = options.refine_normal_sigma;
     refine.vertex_iterations = options.refine_vertex_iterations;
     const Positions rebuilt = result;
     if (!guided_normal_denoise(rebuilt, faces, refine, result, error)) return false;
+    // Discrepancy bound: the refinement removes noise, so it may move vertices by about the
+    // noise's RMS and no more; more is the guided filter faceting curved parts of the surface.
+    const double edge = mean_edge_length(positions, faces);
+    const double allowed = kRefineMoveToNoise * std::sqrt(3.0) * sigma * edge;
+    const double moved = std::sqrt((result - rebuilt).rowwise().squaredNorm().mean());
+    if (moved > allowed) {
+      result = rebuilt + (result - rebuilt) * (allowed / moved);
+      report.refine_scaled = allowed / moved;
+    }
     clock.done("refinement");
   }
   step(100, "Done");

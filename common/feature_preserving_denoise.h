@@ -16,8 +16,8 @@
 //    normal filter repairs; when more than kTangledShare of the faces point away from those of the
 //    noise-adaptive smoothing (noise_adaptive_smoothing.h), the smoothed mesh is the start;
 //  - refinement: face normals cleaned by guided normal filtering, which keeps creases, and the
-//    vertices fitted to them (Sun et al. 2007), in rounds whose number the noise sets (none
-//    below 5% of the mean edge)
+//    vertices fitted to them (Sun et al. 2007), in rounds whose number the noise sets (below
+//    5% of the mean edge, one round of fewer passes)
 //    (guided_normal_denoise.h);
 //  - the paper's HHT stage above is off by default (paper_stage): measured, it makes the result
 //    worse than the refinement alone on most cases (docs/quality.md).
@@ -32,10 +32,14 @@ namespace hht {
 
 // Share of faces flipped against the smoothed mesh above which the denoiser starts from it.
 constexpr double kTangledShare = 0.0075;
-// Noise (sigma / mean edge) per refinement round: rounds = round(sigma / this), so a mesh with
-// less than half a round's noise (a clean one) is not refined: the guided filter would facet
-// its curved parts (clean homer: 9.2 degrees with one round).
+// Noise (sigma / mean edge) per refinement round: rounds = max(1, round(sigma / this)); below
+// half a round's noise, one round whose normal passes shrink in proportion to the noise, so a
+// clean curved mesh is not faceted (clean homer: 9.2 degrees with a full round).
 constexpr double kNoisePerRound = 0.1;
+
+// The refinement may move vertices by at most this times the noise's RMS (sqrt(3) sigma); a
+// larger move is scaled down to it.
+constexpr double kRefineMoveToNoise = 0.75;
 
 struct DenoiseOptions {
   bool paper_stage = false;     // the paper's divide-and-conquer HHT stage before the refinement
@@ -53,7 +57,7 @@ struct DenoiseOptions {
     o.lambda = 1.0;
     return o;
   }();
-  int refine_rounds = 0;              // 0: set by the noise (kNoisePerRound); none below half a round
+  int refine_rounds = 0;              // 0: set by the noise (kNoisePerRound)
   int refine_normal_passes = 8;       // guided normal filtering passes per round; 0: no refinement
   double refine_normal_sigma = 0.25;  // range width of that filter, on unit normals (~15 degrees)
   int refine_vertex_iterations = 20;  // vertex update iterations towards the filtered normals
@@ -65,6 +69,8 @@ struct DenoiseReport {
   bool untangled = false;      // started from the noise-adaptive smoothing
   int flipped_faces = 0;       // input faces flipped against that smoothing
   int refine_rounds = 0;
+  int refine_normal_passes = 0;  // per round, as used
+  double refine_scaled = 1;      // < 1: the refinement's move was scaled down to the noise's RMS
   int feature_vertices = 0;
   int corners = 0;
   int lines = 0;

@@ -51,8 +51,8 @@ void declare(const MeshDocument&, RichParameterList& p) {
   p.addParam(RichFloat("lambda", float(d.reconstruction.lambda), "Position weight (lambda)",
                        "Weight of the input positions in the reconstruction, relative to the mean edge length."));
   p.addParam(RichInt("refineRounds", d.refine_rounds, "Refinement rounds (0 = by the noise)",
-                     "Rounds of guided normal filtering and vertex update; 0 takes one per 10% of noise (none below "
-                     "5%: a clean mesh is left as it is)."));
+                     "Rounds of guided normal filtering and vertex update; 0 takes one per 10% of noise (below 5%, one "
+                     "round of proportionally fewer passes, so a clean mesh is barely touched)."));
   p.addParam(RichInt("refineNormalPasses", d.refine_normal_passes, "Refinement: normal filtering passes",
                      "Guided normal filtering passes (which keep creases) per round before the vertices are fitted to "
                      "the normals. 0: no refinement (with the paper's stage on, the paper's method alone)."));
@@ -155,9 +155,9 @@ bool apply(FilterRun& run) {
                 .arg(report.lines_by_emd).arg(report.lines - report.lines_by_emd).arg(o.cutoff).arg(o.cycles)
                 .arg(report.imfs.size()).arg(o.reconstruction.lambda).arg(report.reconstruction.iterations));
   }
-  if (report.refine_rounds > 0 && o.refine_normal_passes > 0 && o.refine_vertex_iterations > 0)
+  if (report.refine_normal_passes > 0 && o.refine_vertex_iterations > 0)
     run.log(QString("  refinement: %1 round(s) of %2 guided normal filtering passes and %3 vertex update iterations")
-                .arg(report.refine_rounds).arg(o.refine_normal_passes).arg(o.refine_vertex_iterations));
+                .arg(report.refine_rounds).arg(report.refine_normal_passes).arg(o.refine_vertex_iterations));
   else
     run.log("  no refinement");
   run.log(stage_times_line(report.stages));

@@ -118,14 +118,21 @@ TEST(FeaturePreservingDenoise, CleanInputStaysClean) {
   DenoiseReport report;
   const Positions out = denoise(m.positions, m.faces, {}, &report);
   EXPECT_FALSE(report.untangled);
-  EXPECT_EQ(report.refine_rounds, std::lround(report.sigma_used / kNoisePerRound));
+  EXPECT_EQ(report.refine_rounds, 1);
   EXPECT_LT(mean_face_normal_error_degrees(out, m.positions, m.faces), 1.0);
-  // a smooth clean surface shows no noise and is left exactly as it is
+  // a smooth clean surface shows almost no noise and gets almost no refinement
   const test::ArrayMesh sphere = test::sphere(4);
   DenoiseOptions plain;
   plain.detect_features = false;
-  EXPECT_EQ(denoise(sphere.positions, sphere.faces, plain, &report), sphere.positions);
-  EXPECT_EQ(report.refine_rounds, 0);
+  const Positions sphere_out = denoise(sphere.positions, sphere.faces, plain, &report);
+  EXPECT_LE(report.refine_normal_passes, 1);
+  EXPECT_LT(mean_face_normal_error_degrees(sphere_out, sphere.positions, sphere.faces), 0.1);
+  // a clean curved mesh: the guided filter would facet it (13.5 degrees); the refinement's move
+  // is held to the noise's RMS
+  const test::ArrayMesh elephant = test::load_data_mesh("elephant");
+  const Positions elephant_out = denoise(elephant.positions, elephant.faces, plain, &report);
+  EXPECT_LT(report.refine_scaled, 1.0);
+  EXPECT_LT(mean_face_normal_error_degrees(elephant_out, elephant.positions, elephant.faces), 5.5);
 }
 
 }  // namespace
