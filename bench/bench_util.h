@@ -1,8 +1,8 @@
 // Small helpers for the benchmarks: loading a mesh file and reading the process's memory.
 #pragma once
 
-#include "mesh_arrays.h"
-#include "tri_mesh.h"
+#include "mesh/mesh_arrays.h"
+#include "mesh/tri_mesh.h"
 
 #include <wrap/io_trimesh/import.h>
 

@@ -1,7 +1,7 @@
 // Times the Hamiltonian cycle (Ring Expander) on mesh files; prints one Markdown row each.
 //   cycle_bench mesh.off [mesh2.ply ...]
 #include "bench_util.h"
-#include "hamiltonian_cycle.h"
+#include "cycle/hamiltonian_cycle.h"
 
 #include <algorithm>
 #include <cstdio>

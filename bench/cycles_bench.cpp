@@ -3,9 +3,9 @@
 // signal against the clean sphere's G, and the mean distance to the clean sphere (in mean edge
 // lengths) after the reconstruction, for two lambdas.
 //   cycles_bench
-#include "gaussian_noise.h"
-#include "spectral_mesh_filter.h"
-#include "tri_mesh.h"
+#include "evaluation/gaussian_noise.h"
+#include "filters/spectral_mesh_filter.h"
+#include "mesh/tri_mesh.h"
 
 #include <vcg/complex/algorithms/create/platonic.h>
 

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
-#include "emd.h"
-#include "hilbert_spectrum.h"
+#include "signal/emd.h"
+#include "signal/hilbert_spectrum.h"
 
 namespace {
 

@@ -1,16 +1,16 @@
 // Scratch lab for the smoothing quality work (issue 7): noisy copies of a clean mesh, several
 // candidate smoothers, E_a / RMS / flips against the clean mesh.
 #include "bench_util.h"
-#include "cycle_decomposition.h"
-#include "denoise_metrics.h"
-#include "gaussian_noise.h"
-#include "mean_curvature.h"
-#include "spectral_mesh_filter.h"
-#include "guided_normal_denoise.h"
-#include "feature_preserving_denoise.h"
-#include "noise_adaptive_smoothing.h"
-#include "normal_vertex_update.h"
-#include "sharp_features.h"
+#include "cycle/cycle_decomposition.h"
+#include "evaluation/denoise_metrics.h"
+#include "evaluation/gaussian_noise.h"
+#include "mesh/mean_curvature.h"
+#include "filters/spectral_mesh_filter.h"
+#include "filters/guided_normal_denoise.h"
+#include "filters/feature_preserving_denoise.h"
+#include "filters/noise_adaptive_smoothing.h"
+#include "reconstruction/normal_vertex_update.h"
+#include "mesh/sharp_features.h"
 
 #include <Eigen/SparseCholesky>
 

@@ -4,7 +4,7 @@
 // for a smoothing-sized change of the signal (G halved).
 //   reconstruction_bench [--direct] mesh [more meshes]   (--direct: also time the direct solve)
 #include "bench_util.h"
-#include "laplacian_reconstruction.h"
+#include "reconstruction/laplacian_reconstruction.h"
 
 #include <cstdio>
 #include <cstring>

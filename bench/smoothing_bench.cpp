@@ -2,7 +2,7 @@
 // files with the defaults of resources/smooth.mlx; prints one Markdown row per mesh.
 //   smoothing_bench mesh.ply [more meshes]
 #include "bench_util.h"
-#include "spectral_mesh_filter.h"
+#include "filters/spectral_mesh_filter.h"
 
 #include <cstdio>
 

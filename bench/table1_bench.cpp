@@ -11,10 +11,10 @@
 // With --max-imfs K both sides stop after K IMFs at most (for meshes where the whole 3D-EMD
 // takes too long: the speed-up at the first K IMFs).
 #include "bench_util.h"
-#include "cycle_decomposition.h"
-#include "mean_curvature.h"
-#include "spectral_mesh_filter.h"
-#include "surface_emd.h"
+#include "cycle/cycle_decomposition.h"
+#include "mesh/mean_curvature.h"
+#include "filters/spectral_mesh_filter.h"
+#include "filters/surface_emd.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -4,8 +4,8 @@
 #include "hht_parameters.h"
 #include "mesh_adapter.h"
 
-#include "gaussian_noise.h"
-#include "noise_adaptive_smoothing.h"
+#include "evaluation/gaussian_noise.h"
+#include "filters/noise_adaptive_smoothing.h"
 
 namespace hht_plugin {
 

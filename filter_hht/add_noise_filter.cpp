@@ -2,7 +2,7 @@
 #include "filter_spec.h"
 #include "mesh_adapter.h"
 
-#include "gaussian_noise.h"
+#include "evaluation/gaussian_noise.h"
 
 namespace hht_plugin {
 

@@ -2,7 +2,7 @@
 #include "filter_spec.h"
 #include "mesh_adapter.h"
 
-#include "bilateral_denoise.h"
+#include "filters/bilateral_denoise.h"
 
 namespace hht_plugin {
 

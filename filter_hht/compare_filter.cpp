@@ -2,7 +2,7 @@
 #include "filter_spec.h"
 #include "mesh_adapter.h"
 
-#include "denoise_metrics.h"
+#include "evaluation/denoise_metrics.h"
 
 namespace hht_plugin {
 

@@ -2,7 +2,7 @@
 #include "filter_spec.h"
 #include "mesh_adapter.h"
 
-#include "mean_curvature.h"
+#include "mesh/mean_curvature.h"
 
 namespace hht_plugin {
 

@@ -5,8 +5,8 @@
 #include "hht_parameters.h"
 #include "mesh_adapter.h"
 
-#include "feature_preserving_denoise.h"
-#include "gaussian_noise.h"
+#include "filters/feature_preserving_denoise.h"
+#include "evaluation/gaussian_noise.h"
 
 #include <vcg/complex/allocate.h>
 

@@ -3,7 +3,7 @@
 #include "filter_spec.h"
 #include "mesh_adapter.h"
 
-#include "guided_normal_denoise.h"
+#include "filters/guided_normal_denoise.h"
 
 namespace hht_plugin {
 

@@ -2,7 +2,7 @@
 #include "filter_spec.h"
 #include "mesh_adapter.h"
 
-#include "hamiltonian_cycle.h"
+#include "cycle/hamiltonian_cycle.h"
 
 #include <vcg/complex/algorithms/update/color.h>
 #include <vcg/complex/allocate.h>

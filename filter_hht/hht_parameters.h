@@ -2,8 +2,8 @@
 // with the same names, defaults and help everywhere.
 #pragma once
 
-#include "emd.h"
-#include "hamiltonian_cycle.h"
+#include "signal/emd.h"
+#include "cycle/hamiltonian_cycle.h"
 
 #include "meshlab_api.h"
 

@@ -5,8 +5,8 @@
 #include "hht_parameters.h"
 #include "mesh_adapter.h"
 
-#include "cycle_decomposition.h"
-#include "mean_curvature.h"
+#include "cycle/cycle_decomposition.h"
+#include "mesh/mean_curvature.h"
 
 namespace hht_plugin {
 

@@ -1,7 +1,7 @@
 #include "mesh_adapter.h"
 
-#include "mesh_checks.h"
-#include "value_range.h"
+#include "mesh/mesh_checks.h"
+#include "mesh/value_range.h"
 
 #include <vcg/complex/algorithms/update/color.h>
 

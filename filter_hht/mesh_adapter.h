@@ -2,9 +2,9 @@
 // a per-vertex scalar as quality with a colour ramp, and timing stages for the log.
 #pragma once
 
-#include "cycle_decomposition.h"
-#include "mesh_arrays.h"
-#include "stage_clock.h"
+#include "cycle/cycle_decomposition.h"
+#include "mesh/mesh_arrays.h"
+#include "mesh/stage_clock.h"
 
 #include "meshlab_api.h"
 

@@ -2,7 +2,7 @@
 #include "filter_spec.h"
 #include "mesh_adapter.h"
 
-#include "nonlocal_means_denoise.h"
+#include "filters/nonlocal_means_denoise.h"
 
 namespace hht_plugin {
 

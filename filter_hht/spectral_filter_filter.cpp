@@ -4,7 +4,7 @@
 #include "hht_parameters.h"
 #include "mesh_adapter.h"
 
-#include "spectral_mesh_filter.h"
+#include "filters/spectral_mesh_filter.h"
 
 namespace hht_plugin {
 

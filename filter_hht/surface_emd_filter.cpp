@@ -4,7 +4,7 @@
 #include "mesh_adapter.h"
 #include "surface_emd_parameters.h"
 
-#include "mean_curvature.h"
+#include "mesh/mean_curvature.h"
 
 namespace hht_plugin {
 

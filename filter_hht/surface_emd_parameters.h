@@ -3,7 +3,7 @@
 #pragma once
 
 #include "meshlab_api.h"
-#include "surface_emd_smoothing.h"
+#include "filters/surface_emd_smoothing.h"
 
 namespace hht_plugin {
 

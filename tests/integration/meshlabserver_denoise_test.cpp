@@ -1,7 +1,7 @@
 // The denoising filters (issue 4) through meshlabserver.
 #include "meshlabserver_harness.h"
 
-#include "denoise_metrics.h"
+#include "evaluation/denoise_metrics.h"
 
 #include <gtest/gtest.h>
 #include <wrap/io_trimesh/import_off.h>

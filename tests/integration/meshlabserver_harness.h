@@ -1,8 +1,8 @@
 // Runs the staged meshlabserver (under a private Xvfb) on a script and reads back what it saved.
 #pragma once
 
-#include "mesh_arrays.h"
-#include "tri_mesh.h"
+#include "mesh/mesh_arrays.h"
+#include "mesh/tri_mesh.h"
 
 #include <string>
 #include <utility>

@@ -4,13 +4,13 @@
 // parameter values, and the comparison allows for the float rounding of what was saved.
 #include "meshlabserver_harness.h"
 
-#include "bilateral_denoise.h"
-#include "cycle_decomposition.h"
-#include "denoise_metrics.h"
-#include "feature_preserving_denoise.h"
-#include "gaussian_noise.h"
-#include "mean_curvature.h"
-#include "spectral_mesh_filter.h"
+#include "filters/bilateral_denoise.h"
+#include "cycle/cycle_decomposition.h"
+#include "evaluation/denoise_metrics.h"
+#include "filters/feature_preserving_denoise.h"
+#include "evaluation/gaussian_noise.h"
+#include "mesh/mean_curvature.h"
+#include "filters/spectral_mesh_filter.h"
 
 #include <gtest/gtest.h>
 #include <wrap/io_trimesh/export_ply.h>

@@ -1,9 +1,9 @@
 // The surface EMD, feature-centric EMD and non-local means filters (issue 8) through meshlabserver.
 #include "meshlabserver_harness.h"
 
-#include "denoise_metrics.h"
-#include "mean_curvature.h"
-#include "surface_emd.h"
+#include "evaluation/denoise_metrics.h"
+#include "mesh/mean_curvature.h"
+#include "filters/surface_emd.h"
 
 #include <gtest/gtest.h>
 #include <wrap/io_trimesh/import_off.h>

@@ -1,8 +1,8 @@
 // The plugin as a user runs it: the shipped scripts through the real meshlabserver.
 #include "meshlabserver_harness.h"
 
-#include "gaussian_noise.h"
-#include "mean_curvature.h"
+#include "evaluation/gaussian_noise.h"
+#include "mesh/mean_curvature.h"
 
 #include <gtest/gtest.h>
 #include <wrap/io_trimesh/export_ply.h>

@@ -1,6 +1,6 @@
-#include "bilateral_denoise.h"
-#include "denoise_metrics.h"
-#include "gaussian_noise.h"
+#include "filters/bilateral_denoise.h"
+#include "evaluation/denoise_metrics.h"
+#include "evaluation/gaussian_noise.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-#include "cubic_spline.h"
+#include "signal/cubic_spline.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // Moving values onto the cycle and back, and the rule for vertices the cycle misses: they take
 // the one-ring mean of their neighbours' values (quantities) or of their neighbours' change
 // (the filtered signal), computed here from the faces, not by the library's own loop.
-#include "cycle_decomposition.h"
-#include "cycle_signal.h"
-#include "mean_curvature.h"
+#include "cycle/cycle_decomposition.h"
+#include "cycle/cycle_signal.h"
+#include "mesh/mean_curvature.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
-#include "denoise_metrics.h"
-#include "gaussian_noise.h"
+#include "evaluation/denoise_metrics.h"
+#include "evaluation/gaussian_noise.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

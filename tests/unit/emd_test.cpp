@@ -1,4 +1,4 @@
-#include "emd.h"
+#include "signal/emd.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // The paper's feature processing (sec. 4.3): each feature line is its own 1D signal,
 // decomposed by EMD when it is long enough. On the cube and the elephant every line is too
 // short and takes the 1D Laplacian instead, so this needs a mesh with long creases: a long box.
-#include "feature_preserving_denoise.h"
-#include "gaussian_noise.h"
-#include "mean_curvature.h"
+#include "filters/feature_preserving_denoise.h"
+#include "evaluation/gaussian_noise.h"
+#include "mesh/mean_curvature.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
-#include "denoise_metrics.h"
-#include "feature_preserving_denoise.h"
-#include "gaussian_noise.h"
-#include "guided_normal_denoise.h"
+#include "evaluation/denoise_metrics.h"
+#include "filters/feature_preserving_denoise.h"
+#include "evaluation/gaussian_noise.h"
+#include "filters/guided_normal_denoise.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

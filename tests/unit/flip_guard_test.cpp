@@ -1,5 +1,5 @@
-#include "flip_guard.h"
-#include "spectral_mesh_filter.h"
+#include "reconstruction/flip_guard.h"
+#include "filters/spectral_mesh_filter.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

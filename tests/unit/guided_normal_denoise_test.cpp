@@ -1,6 +1,6 @@
-#include "denoise_metrics.h"
-#include "gaussian_noise.h"
-#include "guided_normal_denoise.h"
+#include "evaluation/denoise_metrics.h"
+#include "evaluation/gaussian_noise.h"
+#include "filters/guided_normal_denoise.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

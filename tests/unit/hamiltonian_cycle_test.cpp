@@ -1,4 +1,4 @@
-#include "hamiltonian_cycle.h"
+#include "cycle/hamiltonian_cycle.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

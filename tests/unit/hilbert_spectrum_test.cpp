@@ -1,4 +1,4 @@
-#include "hilbert_spectrum.h"
+#include "signal/hilbert_spectrum.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "laplacian_reconstruction.h"
+#include "reconstruction/laplacian_reconstruction.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

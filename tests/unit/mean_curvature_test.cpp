@@ -1,4 +1,4 @@
-#include "mean_curvature.h"
+#include "mesh/mean_curvature.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

@@ -1,8 +1,8 @@
-#include "denoise_metrics.h"
-#include "gaussian_noise.h"
-#include "noise_adaptive_smoothing.h"
+#include "evaluation/denoise_metrics.h"
+#include "evaluation/gaussian_noise.h"
+#include "filters/noise_adaptive_smoothing.h"
 #include "test_meshes.h"
-#include "uniform_laplacian.h"
+#include "mesh/uniform_laplacian.h"
 
 #include <Eigen/SparseCholesky>
 #include <gtest/gtest.h>

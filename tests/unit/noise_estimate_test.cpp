@@ -1,5 +1,5 @@
-#include "gaussian_noise.h"
-#include "noise_estimate.h"
+#include "evaluation/gaussian_noise.h"
+#include "signal/noise_estimate.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

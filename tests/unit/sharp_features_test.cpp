@@ -1,6 +1,6 @@
-#include "feature_lines.h"
-#include "gaussian_noise.h"
-#include "sharp_features.h"
+#include "cycle/feature_lines.h"
+#include "evaluation/gaussian_noise.h"
+#include "mesh/sharp_features.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

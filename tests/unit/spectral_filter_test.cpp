@@ -1,4 +1,4 @@
-#include "spectral_filter.h"
+#include "signal/spectral_filter.h"
 
 #include <gtest/gtest.h>
 

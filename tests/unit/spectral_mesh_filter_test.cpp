@@ -1,5 +1,5 @@
-#include "gaussian_noise.h"
-#include "spectral_mesh_filter.h"
+#include "evaluation/gaussian_noise.h"
+#include "filters/spectral_mesh_filter.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
-#include "denoise_metrics.h"
-#include "gaussian_noise.h"
-#include "surface_emd_smoothing.h"
+#include "evaluation/denoise_metrics.h"
+#include "evaluation/gaussian_noise.h"
+#include "filters/surface_emd_smoothing.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
-#include "surface_emd.h"
+#include "filters/surface_emd.h"
 
-#include "cotangent_laplacian.h"
+#include "mesh/cotangent_laplacian.h"
 #include "test_meshes.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 #include "test_meshes.h"
 
-#include "corner_table.h"
+#include "mesh/corner_table.h"
 
 #include <vcg/complex/algorithms/create/platonic.h>
 #include <wrap/io_trimesh/import_off.h>

@@ -2,8 +2,8 @@
 // scripts/setup.sh) and generated ones.
 #pragma once
 
-#include "mesh_arrays.h"
-#include "tri_mesh.h"
+#include "mesh/mesh_arrays.h"
+#include "mesh/tri_mesh.h"
 
 #include <string>
 

@@ -1,0 +1,41 @@
+#include "evaluation/gaussian_noise.h"
+
+#include "mesh/vertex_normals.h"
+
+#include <random>
+
+namespace hht {
+
+double mean_edge_length(const Positions& p, const Faces& f) {
+  double sum = 0;
+  for (Eigen::Index i = 0; i < f.rows(); ++i)
+    for (int k = 0; k < 3; ++k) sum += (p.row(f(i, k)) - p.row(f(i, (k + 1) % 3))).norm();
+  return f.rows() > 0 ? sum / (3.0 * f.rows()) : 0.0;
+}
+
+Positions add_gaussian_noise(const Positions& positions, const Faces& faces, double percent_of_mean_edge,
+                             NoiseDirection direction, unsigned seed) {
+  const double sigma = percent_of_mean_edge / 100.0 * mean_edge_length(positions, faces);
+  const Positions normals = area_weighted_vertex_normals(positions, faces);
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> gauss(0.0, 1.0);
+  Positions out = positions;
+  for (Eigen::Index i = 0; i < positions.rows(); ++i) {
+    Eigen::RowVector3d dir = normals.row(i);
+    if (dir.squaredNorm() == 0) continue;  // no face, no normal: left in place
+    if (direction == NoiseDirection::Isotropic) {
+      out.row(i) += sigma * Eigen::RowVector3d(gauss(rng), gauss(rng), gauss(rng));
+      continue;
+    }
+    if (direction == NoiseDirection::Random) {
+      do {
+        dir = Eigen::RowVector3d(gauss(rng), gauss(rng), gauss(rng));
+      } while (dir.squaredNorm() < 1e-24);
+      dir.normalize();
+    }
+    out.row(i) += sigma * gauss(rng) * dir;
+  }
+  return out;
+}
+
+}  // namespace hht

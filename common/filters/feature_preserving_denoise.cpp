@@ -1,0 +1,234 @@
+#include "filters/feature_preserving_denoise.h"
+
+#include "mesh/mesh_checks.h"
+#include "evaluation/gaussian_noise.h"
+#include "filters/guided_normal_denoise.h"
+#include "reconstruction/normal_vertex_update.h"
+
+#include <algorithm>
+#include <map>
+
+namespace hht {
+
+namespace {
+
+// A low-pass filtered copy of a 1D signal, or nothing when EMD finds no IMF in it.
+bool low_pass(const std::vector<double>& signal, SignalBoundary boundary, const EmdOptions& base, double cutoff,
+              std::vector<double>& out) {
+  EmdOptions o = base;
+  o.boundary = boundary;
+  const EmdResult e = emd(signal, o);
+  if (e.imfs.empty()) return false;
+  HilbertTransformer t(static_cast<int>(signal.size()));
+  std::vector<HilbertSpectrum> spectra;
+  for (const auto& imf : e.imfs) spectra.push_back(t.spectrum(imf, boundary));
+  out = filter_by_frequency(e, spectra, {cutoff, 0.5, false}, 0.0);
+  return true;
+}
+
+// Repeated (1/4, 1/2, 1/4) averaging along a line; the ends of an open line average with
+// their one neighbour.
+std::vector<double> laplacian_smoothing(std::vector<double> s, bool closed, int passes) {
+  const size_t n = s.size();
+  if (n < 3) return s;
+  std::vector<double> next(n);
+  for (int p = 0; p < passes; ++p) {
+    for (size_t i = 0; i < n; ++i) {
+      const bool first = i == 0, last = i + 1 == n;
+      const double left = first ? (closed ? s[n - 1] : s[i]) : s[i - 1];
+      const double right = last ? (closed ? s[0] : s[i]) : s[i + 1];
+      next[i] = 0.25 * left + 0.5 * s[i] + 0.25 * right;
+    }
+    s.swap(next);
+  }
+  return s;
+}
+
+// The paper's sec. 4.3 on `positions` (features already in `report`), rebuilt into `result`.
+bool paper_stage(const Positions& positions, const Faces& faces, const DenoiseOptions& options, Positions& result,
+                 DenoiseReport& report, StageClock& clock, const std::function<void(int, const char*)>& step,
+                 std::string& error) {
+  const int n = static_cast<int>(positions.rows());
+  std::vector<unsigned char> is_feature(n, 0);
+  for (int v = 0; v < n; ++v) is_feature[v] = report.type[v] != FeatureType::None;
+
+  step(20, "Curvature signal");
+  MeanCurvature curvature;
+  if (!mean_curvature(positions, faces, curvature, error)) return false;
+  const Eigen::VectorXd& g = curvature.signal;
+  clock.done("signal");
+
+  // Non-feature signal: sifted with feature vertices masked, low-passed, averaged over cycles.
+  Eigen::VectorXd filtered = Eigen::VectorXd::Zero(n);
+  const int cycles = std::max(1, options.cycles);
+  for (int k = 0; k < cycles; ++k) {
+    step(25 + 35 * k / cycles, "Hamiltonian cycle and EMD of the non-feature signal");
+    HamiltonianCycle cycle;
+    CycleOptions seeded = options.cycle;
+    seeded.seed = options.cycle.seed + 7919 * k;
+    if (!hamiltonian_cycle(faces, n, seeded, cycle, error)) return false;
+    std::vector<std::vector<double>> per_segment;
+    const auto segments = signals_along_cycle(cycle, g);
+    for (size_t s = 0; s < segments.size(); ++s) {
+      std::vector<unsigned char> mask;
+      for (int i = cycle.segment_begin[s]; i < cycle.segment_begin[s + 1]; ++i) mask.push_back(is_feature[cycle.order[i]]);
+      EmdOptions o = options.emd;
+      o.never_extremum = &mask;
+      o.boundary = SignalBoundary::Periodic;
+      const EmdResult e = emd(segments[s], o);
+      std::vector<HilbertSpectrum> spectra;
+      if (!e.imfs.empty()) {
+        HilbertTransformer t(static_cast<int>(segments[s].size()));
+        for (const auto& imf : e.imfs) spectra.push_back(t.spectrum(imf, SignalBoundary::Periodic));
+      }
+      if (k == 0 && s == 0) {
+        CycleDecomposition d;
+        d.emd.push_back(e);
+        d.spectra.push_back(spectra);
+        report.imfs = summarize_imfs(d);
+      }
+      per_segment.push_back(filter_by_frequency(e, spectra, {options.cutoff, 0.5, false}, 0.0));
+      for (size_t j = 0; j < per_segment.back().size(); ++j) per_segment.back()[j] -= segments[s][j];
+    }
+    filtered += g + values_on_vertices(cycle, per_segment, faces, Eigen::VectorXd::Zero(n));
+    if (k == 0) report.cycle = std::move(cycle);
+  }
+  filtered /= cycles;
+  clock.done("non-feature signal");
+
+  // Feature lines: each its own signal (corners excluded; they are averaged below).
+  step(65, "Feature line signals");
+  const FeatureLines& fl = report.feature_lines;
+  for (size_t l = 0; l < fl.lines.size(); ++l) {
+    std::vector<int> vertices;
+    for (int v : fl.lines[l])
+      if (report.type[v] != FeatureType::Corner) vertices.push_back(v);
+    if (vertices.empty()) continue;
+    std::vector<double> signal, out;
+    for (int v : vertices) signal.push_back(g[v]);
+    const bool closed = fl.closed[l] != 0;
+    if (low_pass(signal, closed ? SignalBoundary::Periodic : SignalBoundary::Open, options.emd, options.cutoff, out))
+      ++report.lines_by_emd;
+    else
+      out = laplacian_smoothing(signal, closed, options.short_line_passes);
+    for (size_t i = 0; i < vertices.size(); ++i) filtered[vertices[i]] = out[i];
+  }
+  // Feature vertices on no line (chains too short to link) keep the cycle's filtered value.
+  // Corners: the mean over corners of the same type (valence and convexity).
+  std::map<std::pair<int, bool>, std::pair<double, int>> by_type;
+  for (size_t c = 0; c < fl.corners.size(); ++c) {
+    auto& acc = by_type[{fl.corner_valence[c], g[fl.corners[c]] >= 0}];
+    acc.first += g[fl.corners[c]];
+    ++acc.second;
+  }
+  for (size_t c = 0; c < fl.corners.size(); ++c) {
+    const auto& acc = by_type[{fl.corner_valence[c], g[fl.corners[c]] >= 0}];
+    filtered[fl.corners[c]] = acc.first / acc.second;
+  }
+  clock.done("feature signals");
+
+  step(70, "Reconstruction");
+  if (!reconstruct_positions(positions, faces, curvature, filtered, options.reconstruction, result, report.reconstruction,
+                             error))
+    return false;
+  clock.done("reconstruction");
+
+  return true;
+}
+
+}  // namespace
+
+bool feature_preserving_denoise(const Positions& positions, const Faces& faces, const DenoiseOptions& options,
+                                Positions& result, DenoiseReport& report, std::string& error,
+                                const Progress& progress) {
+  report = DenoiseReport{};
+  StageClock clock(report.stages);
+  auto step = [&](int percent, const char* what) {
+    if (progress) progress(percent, what);
+  };
+  if (!check_triangle_mesh(positions, faces, error)) return false;
+  const int n = static_cast<int>(positions.rows());
+
+  step(2, "Noise estimate (finest IMF)");
+  double sigma = options.noise;
+  if (!(sigma > 0)) {
+    HamiltonianCycle cycle;
+    if (!hamiltonian_cycle(faces, n, options.cycle, cycle, error)) return false;
+    if (!estimate_noise(positions, faces, cycle, options.emd, report.noise, error)) return false;
+    report.cycle = std::move(cycle);
+    sigma = report.noise.relative();
+    clock.done("noise estimate");
+  }
+  report.sigma_used = sigma;
+
+  // Features of the input, for the paper's stage and for showing them.
+  report.type.assign(n, FeatureType::None);
+  if (options.detect_features) {
+    step(5, "Sharp feature detection");
+    if (!detect_sharp_features(positions, faces, options.features, report.type, error)) return false;
+    report.feature_lines = link_feature_lines(positions, faces, report.type);
+    report.feature_vertices =
+        static_cast<int>(std::count_if(report.type.begin(), report.type.end(), [](FeatureType t) { return t != FeatureType::None; }));
+    report.lines = static_cast<int>(report.feature_lines.lines.size());
+    report.corners = static_cast<int>(report.feature_lines.corners.size());
+    clock.done("features");
+  }
+
+  Positions start = positions;
+  if (options.untangle) {
+    step(8, "Untangling: noise-adaptive smoothing");
+    NoiseAdaptiveSmoothingOptions smoothing;
+    smoothing.noise = sigma;
+    NoiseAdaptiveSmoothingReport smoothing_report;
+    Positions smoothed;
+    if (!noise_adaptive_smooth(positions, faces, smoothing, smoothed, smoothing_report, error)) return false;
+    for (Eigen::Index f = 0; f < faces.rows(); ++f) {
+      const auto normal = [&](const Positions& p) {
+        const Eigen::RowVector3d a = p.row(faces(f, 0));
+        return Eigen::RowVector3d((p.row(faces(f, 1)) - a).cross(p.row(faces(f, 2)) - a));
+      };
+      report.flipped_faces += normal(positions).dot(normal(smoothed)) < 0;
+    }
+    report.untangled = report.flipped_faces > kTangledShare * static_cast<double>(faces.rows());
+    if (report.untangled) start = smoothed;
+    clock.done("untangling");
+  }
+
+  result = start;
+  if (options.paper_stage && !paper_stage(start, faces, options, result, report, clock, step, error)) return false;
+
+  // Below half a round's noise, one round with passes in proportion to the noise: light noise
+  // (Fandisk at 5%) is still cleaned, a clean curved mesh is not faceted.
+  int normal_passes = options.refine_normal_passes;
+  report.refine_rounds = options.refine_rounds;
+  if (report.refine_rounds <= 0) {
+    report.refine_rounds = std::max(1, static_cast<int>(std::lround(sigma / kNoisePerRound)));
+    if (sigma < 0.5 * kNoisePerRound)
+      normal_passes = static_cast<int>(std::lround(normal_passes * sigma / (0.5 * kNoisePerRound)));
+  }
+  report.refine_normal_passes = normal_passes;
+  if (normal_passes > 0 && options.refine_vertex_iterations > 0) {
+    step(90, "Refinement: guided normal filtering and vertex update");
+    GuidedNormalDenoiseOptions refine;
+    refine.rounds = report.refine_rounds;
+    refine.normal_passes = normal_passes;
+    refine.sigma = options.refine_normal_sigma;
+    refine.vertex_iterations = options.refine_vertex_iterations;
+    const Positions rebuilt = result;
+    if (!guided_normal_denoise(rebuilt, faces, refine, result, error)) return false;
+    // Discrepancy bound: the refinement removes noise, so it may move vertices by about the
+    // noise's RMS and no more; more is the guided filter faceting curved parts of the surface.
+    const double edge = mean_edge_length(positions, faces);
+    const double allowed = kRefineMoveToNoise * std::sqrt(3.0) * sigma * edge;
+    const double moved = std::sqrt((result - rebuilt).rowwise().squaredNorm().mean());
+    if (moved > allowed) {
+      result = rebuilt + (result - rebuilt) * (allowed / moved);
+      report.refine_scaled = allowed / moved;
+    }
+    clock.done("refinement");
+  }
+  step(100, "Done");
+  return true;
+}
+
+}  // namespace hht

@@ -1,0 +1,90 @@
+// Feature-preserving denoising by the HHT (the paper's sec. 4.3, Figs. 4, 8-10): sharp
+// features are detected and linked into feature lines; the curvature signal is then processed
+// by divide and conquer:
+//   - the cycle's signal is sifted with feature vertices never taken as extrema, so the
+//     envelopes, and thus the IMFs of the smooth regions, are not bent by the creases, and is
+//     low-pass filtered on instantaneous frequency (averaged over several cycles);
+//   - each feature line is its own 1D signal (periodic when the line is closed), decomposed and
+//     low-pass filtered the same way; a line too short for EMD is smoothed by a 1D Laplacian;
+//   - corners take the mean signal of the corners of their type (same number of lines, same sign);
+// then the mesh is rebuilt from the recombined signal by the Laplacian least-squares solve.
+//
+// What is ours (docs/quality.md measures each part and says why):
+//  - the noise level is estimated first, from the finest IMF of the one-ring height signal along
+//    the cycle (noise_estimate.h);
+//  - untangling: noise with a tangential part (a scanner's) folds small triangles over, which no
+//    normal filter repairs; when more than kTangledShare of the faces point away from those of the
+//    noise-adaptive smoothing (noise_adaptive_smoothing.h), the smoothed mesh is the start;
+//  - refinement: face normals cleaned by guided normal filtering, which keeps creases, and the
+//    vertices fitted to them (Sun et al. 2007), in rounds whose number the noise sets (below
+//    5% of the mean edge, one round of fewer passes)
+//    (guided_normal_denoise.h);
+//  - the paper's HHT stage above is off by default (paper_stage): measured, it makes the result
+//    worse than the refinement alone on most cases (docs/quality.md).
+#pragma once
+
+#include "cycle/feature_lines.h"
+#include "mesh/sharp_features.h"
+#include "filters/noise_adaptive_smoothing.h"
+#include "filters/spectral_mesh_filter.h"
+
+namespace hht {
+
+// Share of faces flipped against the smoothed mesh above which the denoiser starts from it.
+constexpr double kTangledShare = 0.0075;
+// Noise (sigma / mean edge) per refinement round: rounds = max(1, round(sigma / this)); below
+// half a round's noise, one round whose normal passes shrink in proportion to the noise, so a
+// clean curved mesh is not faceted (clean homer: 9.2 degrees with a full round).
+constexpr double kNoisePerRound = 0.1;
+
+// The refinement may move vertices by at most this times the noise's RMS (sqrt(3) sigma); a
+// larger move is scaled down to it.
+constexpr double kRefineMoveToNoise = 0.75;
+
+struct DenoiseOptions {
+  bool paper_stage = false;     // the paper's divide-and-conquer HHT stage before the refinement
+  double noise = 0;             // sigma / mean edge length; 0 or less: estimated
+  bool untangle = true;         // start from the noise-adaptive smoothing when the input is tangled
+  bool detect_features = true;  // false: the torus-like case, no feature separation (Fig. 8)
+  SharpFeatureOptions features;
+  CycleOptions cycle;
+  int cycles = 4;             // cycles whose filtered non-feature signals are averaged
+  EmdOptions emd;
+  double cutoff = 0.05;       // instantaneous frequencies above this are removed (cycles per sample)
+  int short_line_passes = 10; // 1D Laplacian passes on feature lines too short for EMD
+  ReconstructionOptions reconstruction = [] {
+    ReconstructionOptions o;
+    o.lambda = 1.0;
+    return o;
+  }();
+  int refine_rounds = 0;              // 0: set by the noise (kNoisePerRound)
+  int refine_normal_passes = 8;       // guided normal filtering passes per round; 0: no refinement
+  double refine_normal_sigma = 0.25;  // range width of that filter, on unit normals (~15 degrees)
+  int refine_vertex_iterations = 20;  // vertex update iterations towards the filtered normals
+};
+
+struct DenoiseReport {
+  NoiseEstimate noise;         // the estimate (sigma 0 when the noise was given)
+  double sigma_used = 0;       // relative to the mean edge
+  bool untangled = false;      // started from the noise-adaptive smoothing
+  int flipped_faces = 0;       // input faces flipped against that smoothing
+  int refine_rounds = 0;
+  int refine_normal_passes = 0;  // per round, as used
+  double refine_scaled = 1;      // < 1: the refinement's move was scaled down to the noise's RMS
+  int feature_vertices = 0;
+  int corners = 0;
+  int lines = 0;
+  int lines_by_emd = 0;        // long enough for EMD; the others were smoothed by a 1D Laplacian
+  HamiltonianCycle cycle;      // the first cycle
+  std::vector<ImfSummary> imfs;  // of the first cycle's non-feature signal
+  ReconstructionReport reconstruction;
+  std::vector<StageTime> stages;
+  std::vector<FeatureType> type;  // per vertex
+  FeatureLines feature_lines;
+};
+
+bool feature_preserving_denoise(const Positions& positions, const Faces& faces, const DenoiseOptions& options,
+                                Positions& result, DenoiseReport& report, std::string& error,
+                                const Progress& progress = {});
+
+}  // namespace hht

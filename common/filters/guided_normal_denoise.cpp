@@ -1,0 +1,29 @@
+#include "filters/guided_normal_denoise.h"
+
+#include "mesh/mesh_checks.h"
+#include "reconstruction/normal_vertex_update.h"
+#include "mesh/sharp_features.h"
+
+namespace hht {
+
+bool guided_normal_denoise(const Positions& positions, const Faces& faces, const GuidedNormalDenoiseOptions& options,
+                           Positions& result, std::string& error) {
+  if (!check_triangle_mesh(positions, faces, error)) return false;
+  if (options.rounds < 0 || options.normal_passes < 0 || options.vertex_iterations < 0 || !(options.sigma > 0)) {
+    error = "rounds, passes and iterations must be at least 0 and sigma positive";
+    return false;
+  }
+  result = positions;
+  for (int round = 0; round < options.rounds; ++round) {
+    Positions normals;
+    if (!guided_face_normals(result, faces, options.normal_passes, options.sigma, normals, error)) return false;
+    result = fit_vertices_to_normals(result, faces, normals, options.vertex_iterations);
+  }
+  if (!result.allFinite()) {
+    error = "the vertex update produced non-finite positions";
+    return false;
+  }
+  return true;
+}
+
+}  // namespace hht

@@ -1,0 +1,28 @@
+// Feature-preserving denoising by guided mesh normal filtering alone (Zhang, Deng, Zhang,
+// Bouaziz, Liu, "Guided mesh normal filtering", Pacific Graphics 2015): face normals are
+// filtered by a joint bilateral filter whose range kernel compares guidance normals taken from
+// the most consistent patch around each face (sharp_features.h, guided_face_normals), then the
+// vertices are fitted to the filtered normals (Sun et al. 2007, normal_vertex_update.h); the
+// two steps are repeated `rounds` times, each round filtering the normals of the last result.
+// No HHT: the strongest of the field's denoisers that this project has, the baseline the HHT
+// denoiser is measured against, and the refinement stage of that denoiser.
+#pragma once
+
+#include "mesh/mesh_arrays.h"
+
+#include <string>
+
+namespace hht {
+
+struct GuidedNormalDenoiseOptions {
+  int rounds = 1;              // normal filtering + vertex update, repeated
+  int normal_passes = 8;       // guided normal filtering passes per round
+  double sigma = 0.35;         // range width on unit guidance normals (~20 degrees)
+  int vertex_iterations = 20;  // vertex update iterations per round
+};
+
+// Fails like guided_face_normals on broken input (no faces, non-manifold, non-finite).
+bool guided_normal_denoise(const Positions& positions, const Faces& faces, const GuidedNormalDenoiseOptions& options,
+                           Positions& result, std::string& error);
+
+}  // namespace hht

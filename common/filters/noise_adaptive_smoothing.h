@@ -1,0 +1,63 @@
+// Noise-adaptive smoothing (ours, not the paper's; docs/quality.md says why and measures it):
+//   1. the noise level sigma is estimated from the finest IMF of the one-ring height signal
+//      along the Hamiltonian cycle (noise_estimate.h);
+//   2. the positions are rebuilt by a least-squares solve in the form of the paper's eq. 9-11,
+//      with a zero target for the squared Laplacian: min ||L^2 V~||^2 + mu^4 ||V~ - V||^2, L the
+//      uniform Laplacian (robust on slivers, and it pulls tangential noise out). Per eigenmode k
+//      of L the filter keeps mu^4 / (mu^4 + k^4), a second-order Butterworth low-pass: flatter in
+//      the pass band and steeper than Taubin's lambda|mu or the first-order ||L V~||^2 (both
+//      measured, docs/quality.md). mu = kMuScale / sqrt(strength * sigma), sigma in mean edges:
+//      more noise, lower cut-off.
+//   3. each vertex's move along its tangent plane is capped at kTangentialCap * sigma^2 mean
+//      edges: the uniform Laplacian also slides vertices of an irregular (clean) triangulation
+//      towards their neighbours' centroid, which is no noise; tangential noise is of the order
+//      of sigma, so light noise allows little sliding and heavy noise more; faces the cap would
+//      leave tilted by more than 60 degrees keep the uncapped slide (it untangles them);
+//   4. faces left folded against the surface around them get their vertices moved to their
+//      one-ring centroids.
+// Why not the paper's curvature filter for this: docs/quality.md (filtering along one cycle
+// leaves stripes, the keep-tangential target carries the input's noise into the result, and
+// the cotangent Laplacian breaks on slivers).
+#pragma once
+
+#include "signal/noise_estimate.h"
+#include "mesh/stage_clock.h"
+
+#include <functional>
+
+namespace hht {
+
+// Chosen on cow, bull, femur and elephant at 10% and 30% noise, validated on the rest of the
+// corpus (docs/quality.md).
+constexpr double kMuScale = 0.233;
+constexpr double kTangentialCap = 7.0;
+// The solve stops at this relative residual (far below a visible change; measured against a
+// direct solve in tests/unit/noise_adaptive_smoothing_test.cpp).
+constexpr double kSmoothingTolerance = 1e-8;
+constexpr int kSmoothingMaxIterations = 5000;
+
+struct NoiseAdaptiveSmoothingOptions {
+  double noise = 0;            // sigma / mean edge length; 0 or less: estimated
+  double strength = 1;         // > 1 smooths more, < 1 less
+  double mu = 0;               // > 0: this cut-off instead of the one the noise sets (experiments)
+  CycleOptions cycle;
+  EmdOptions emd;
+};
+
+struct NoiseAdaptiveSmoothingReport {
+  NoiseEstimate noise;         // as estimated (sigma 0 when `noise` was given)
+  double sigma_used = 0;       // relative to the mean edge
+  double mu = 0;
+  double max_displacement = 0;
+  double rms_displacement = 0;
+  int unfolded_vertices = 0;
+  int iterations = 0;          // conjugate gradient iterations of the solve
+  double relative_residual = 0;   // moved to their one-ring centroid to undo a fold
+  std::vector<StageTime> stages;
+};
+
+bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const NoiseAdaptiveSmoothingOptions& options,
+                           Positions& result, NoiseAdaptiveSmoothingReport& report, std::string& error,
+                           const std::function<void(int, const char*)>& progress = {});
+
+}  // namespace hht

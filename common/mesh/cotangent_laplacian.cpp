@@ -1,0 +1,89 @@
+#include "mesh/cotangent_laplacian.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace hht {
+
+namespace {
+
+Eigen::Vector3d row(const Positions& p, int i) { return p.row(i).transpose(); }
+
+// cot of the angle between a and b; |cross| floored relative to |a||b| so that a zero-area
+// face contributes a large but finite weight.
+double cotangent(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  const double sine = a.cross(b).norm();
+  const double floor = 1e-8 * a.norm() * b.norm();
+  return a.dot(b) / std::max(sine, floor > 0 ? floor : 1e-300);
+}
+
+}  // namespace
+
+Positions corner_cotangents(const Positions& positions, const Faces& faces) {
+  Positions cot(faces.rows(), 3);
+  for (Eigen::Index f = 0; f < faces.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d p = row(positions, faces(f, k));
+      cot(f, k) = cotangent(row(positions, faces(f, (k + 1) % 3)) - p, row(positions, faces(f, (k + 2) % 3)) - p);
+    }
+  return cot;
+}
+
+Eigen::VectorXd mixed_voronoi_areas(const Positions& positions, const Faces& faces) {
+  Eigen::VectorXd area = Eigen::VectorXd::Zero(positions.rows());
+  for (Eigen::Index f = 0; f < faces.rows(); ++f) {
+    const Eigen::Vector3d p[3] = {row(positions, faces(f, 0)), row(positions, faces(f, 1)), row(positions, faces(f, 2))};
+    const double face_area = 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).norm();
+    if (!(face_area > 0)) continue;
+    int obtuse = -1;
+    for (int k = 0; k < 3; ++k)
+      if ((p[(k + 1) % 3] - p[k]).dot(p[(k + 2) % 3] - p[k]) < 0) obtuse = k;
+    for (int k = 0; k < 3; ++k) {
+      double a;
+      if (obtuse < 0) {
+        // Voronoi region of corner k: (|e_kj|^2 cot(angle at l) + |e_kl|^2 cot(angle at j)) / 8
+        const int j = (k + 1) % 3, l = (k + 2) % 3;
+        const double cot_j = cotangent(p[k] - p[j], p[l] - p[j]);
+        const double cot_l = cotangent(p[k] - p[l], p[j] - p[l]);
+        a = ((p[j] - p[k]).squaredNorm() * cot_l + (p[l] - p[k]).squaredNorm() * cot_j) / 8.0;
+      } else {
+        a = face_area * (k == obtuse ? 0.5 : 0.25);
+      }
+      area[faces(f, k)] += a;
+    }
+  }
+  return area;
+}
+
+Eigen::SparseMatrix<double> cotangent_matrix(const Faces& faces, const Positions& cotangents, int vertex_count) {
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(static_cast<size_t>(faces.rows()) * 12);
+  for (Eigen::Index f = 0; f < faces.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      // the corner k faces the edge (j, l); half its cotangent couples j and l
+      const int j = faces(f, (k + 1) % 3), l = faces(f, (k + 2) % 3);
+      const double w = 0.5 * cotangents(f, k);
+      entries.emplace_back(j, l, -w);
+      entries.emplace_back(l, j, -w);
+      entries.emplace_back(j, j, w);
+      entries.emplace_back(l, l, w);
+    }
+  Eigen::SparseMatrix<double> c(vertex_count, vertex_count);
+  c.setFromTriplets(entries.begin(), entries.end());
+  return c;
+}
+
+Positions cotangent_matrix_times(const Positions& positions, const Faces& faces, const Positions& cotangents) {
+  Positions out = Positions::Zero(positions.rows(), 3);
+  for (Eigen::Index f = 0; f < faces.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int j = faces(f, (k + 1) % 3), l = faces(f, (k + 2) % 3);
+      const Eigen::RowVector3d d = 0.5 * cotangents(f, k) * (positions.row(j) - positions.row(l));
+      out.row(j) += d;
+      out.row(l) -= d;
+    }
+  return out;
+}
+
+}  // namespace hht

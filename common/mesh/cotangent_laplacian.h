@@ -1,0 +1,28 @@
+// The cotangent Laplacian of a triangle mesh, in the form L = M^-1 C of the paper's eq. 10:
+// C is the symmetric positive semi-definite matrix with C_ij = -(cot a_ij + cot b_ij)/2 and
+// C_ii = -sum_j C_ij, M the diagonal of mixed Voronoi areas (Meyer et al. 2003). Then
+// (L V)_i = 1/(2 A_i) sum_j (cot a_ij + cot b_ij)(v_i - v_j) = 2 H_i n_i (H > 0 on a convex
+// surface with outward normals).
+#pragma once
+
+#include "mesh/mesh_arrays.h"
+
+#include <Eigen/Sparse>
+
+namespace hht {
+
+// Cotangent of the angle at each corner (row f, column k: the corner of faces(f, k)).
+// Zero-area faces get bounded cotangents instead of infinities.
+Positions corner_cotangents(const Positions& positions, const Faces& faces);
+
+// Mixed Voronoi area per vertex: Voronoi area in non-obtuse triangles, half the triangle's
+// area at an obtuse corner and a quarter at the others. Vertices of no face get 0.
+Eigen::VectorXd mixed_voronoi_areas(const Positions& positions, const Faces& faces);
+
+// C, assembled (n x n).
+Eigen::SparseMatrix<double> cotangent_matrix(const Faces& faces, const Positions& cotangents, int vertex_count);
+
+// C * positions without assembling C.
+Positions cotangent_matrix_times(const Positions& positions, const Faces& faces, const Positions& cotangents);
+
+}  // namespace hht

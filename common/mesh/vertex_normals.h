@@ -1,0 +1,11 @@
+// Per-vertex unit normals: the sum of the incident faces' area vectors (area weighting),
+// normalised. Oriented by the faces' winding; zero for vertices of no (or only zero-area) faces.
+#pragma once
+
+#include "mesh/mesh_arrays.h"
+
+namespace hht {
+
+Positions area_weighted_vertex_normals(const Positions& positions, const Faces& faces);
+
+}  // namespace hht
