@@ -4,7 +4,7 @@
 
 #include "cycle/cycle_decomposition.h"
 #include "mesh/mesh_arrays.h"
-#include "mesh/stage_clock.h"
+#include "util/stage_clock.h"
 
 #include "meshlab_api.h"
 

@@ -2,7 +2,8 @@
 
 #include "evaluation/gaussian_noise.h"
 #include "mesh/mesh_checks.h"
-#include "mesh/uniform_laplacian.h"
+#include "mesh/vertex_adjacency.h"
+#include "reconstruction/biharmonic_low_pass.h"
 #include "mesh/vertex_normals.h"
 
 
@@ -27,7 +28,7 @@ Positions face_normals(const Positions& p, const Faces& faces) {
 // Faces pointing away from the surface around them (their normal against the mean of their
 // vertices' normals) are folds, left where a sliver's vertices slid past each other: their
 // vertices are moved to their one-ring centroids until none is left (a few passes at most).
-int unfold(Positions& x, const Faces& faces, const std::vector<std::vector<int>>& neighbours) {
+int unfold(Positions& x, const Faces& faces, const VertexAdjacency& adjacency) {
   std::vector<unsigned char> moved(x.rows(), 0);
   for (int pass = 0; pass < 10; ++pass) {
     const Positions vertex_normals = area_weighted_vertex_normals(x, faces);
@@ -41,10 +42,10 @@ int unfold(Positions& x, const Faces& faces, const std::vector<std::vector<int>>
     }
     if (folded.empty()) break;
     for (int i : folded) {
-      if (neighbours[i].empty()) continue;
+      if (adjacency.valence(i) == 0) continue;
       Eigen::RowVector3d centroid = Eigen::RowVector3d::Zero();
-      for (int j : neighbours[i]) centroid += x.row(j);
-      x.row(i) = centroid / static_cast<double>(neighbours[i].size());
+      for (const int* j = adjacency.begin(i); j != adjacency.end(i); ++j) centroid += x.row(*j);
+      x.row(i) = centroid / static_cast<double>(adjacency.valence(i));
       moved[i] = 1;
     }
   }
@@ -92,50 +93,17 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
   step(30, "Least-squares smoothing");
   const Eigen::RowVector3d centre = positions.colwise().mean();
   const Positions v = (positions.rowwise() - centre) / edge;  // unit mean edge
-  const auto neighbours = vertex_neighbours(faces, n);
-  const Eigen::SparseMatrix<double> l = uniform_laplacian(neighbours);
-  const Eigen::SparseMatrix<double> l2 = l * l;
-  const Eigen::SparseMatrix<double> l2t = l2.transpose();
-  const double mu4 = std::pow(report.mu, 4);
-  // (L^2)^T L^2 x + mu^4 x = mu^4 v by conjugate gradients, Jacobi-preconditioned, from x = v:
-  // two sparse products per iteration and no factor (a factor of the 4-ring matrix fills in
-  // badly on large meshes). The condition number is at most 1 + 16 / mu^4.
-  const Eigen::VectorXd inverse_diagonal =
-      (Eigen::VectorXd(l2.cwiseAbs2().transpose() * Eigen::VectorXd::Ones(n)).array() + mu4).inverse();
-  auto apply_a = [&](const Positions& y) -> Positions { return l2t * Positions(l2 * y) + mu4 * y; };
-  const Positions b = mu4 * v;
-  Positions x = v;
-  Positions r = b - apply_a(x);
-  Positions z = inverse_diagonal.asDiagonal() * r;
-  Positions p = z;
-  Eigen::RowVector3d rz = (r.array() * z.array()).colwise().sum();
-  const double b_norm = std::max(b.norm(), 1e-300);
-  const double start_residual = std::max(r.norm() / b_norm, kSmoothingTolerance);
-  double residual = r.norm() / b_norm;
-  int iterations = 0;
-  for (; residual > kSmoothingTolerance && iterations < kSmoothingMaxIterations; ++iterations) {
-    const Positions ap = apply_a(p);
-    const Eigen::RowVector3d pap = (p.array() * ap.array()).colwise().sum();
-    Eigen::RowVector3d alpha, beta;
-    for (int k = 0; k < 3; ++k) alpha[k] = pap[k] > 0 ? rz[k] / pap[k] : 0.0;
-    x += p * alpha.asDiagonal();
-    r -= ap * alpha.asDiagonal();
-    z = inverse_diagonal.asDiagonal() * r;
-    const Eigen::RowVector3d rz_next = (r.array() * z.array()).colwise().sum();
-    for (int k = 0; k < 3; ++k) beta[k] = rz[k] > 0 ? rz_next[k] / rz[k] : 0.0;
-    p = z + p * beta.asDiagonal();
-    rz = rz_next;
-    residual = r.norm() / b_norm;
-    if (iterations % 16 == 0)
-      step(30 + static_cast<int>(60 * std::log(start_residual / std::max(residual, kSmoothingTolerance)) /
-                                 std::log(start_residual / kSmoothingTolerance)),
-           "Least-squares smoothing (conjugate gradients)");
-  }
-  report.iterations = iterations;
-  report.relative_residual = residual;
-  if (residual > kSmoothingTolerance) {
-    error = "conjugate gradients stopped at relative residual " + std::to_string(residual) + " after " +
-            std::to_string(iterations) + " iterations";
+  const VertexAdjacency adjacency = vertex_adjacency(faces, n);
+  clock.done("adjacency");
+  const double diagonal = (positions.colwise().maxCoeff() - positions.colwise().minCoeff()).norm();
+  Positions x;
+  BiharmonicLowPassReport solve;
+  const bool converged = biharmonic_low_pass(adjacency, v, report.mu, kSmoothingMaxError * diagonal / edge, x, solve,
+                                             [&](double done) { step(30 + static_cast<int>(60 * done), "Least-squares smoothing (conjugate gradients)"); });
+  report.iterations = solve.iterations;
+  report.error_bound = solve.error_bound * edge / diagonal;
+  if (!converged) {
+    error = "the least-squares solve did not converge (" + std::to_string(solve.iterations) + " iterations)";
     return false;
   }
   clock.done("solve");
@@ -166,13 +134,15 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
     }
     if (!changed) break;
   }
-  report.unfolded_vertices = unfold(x, faces, neighbours);
+  step(92, "Tangential cap and unfolding");
+  report.unfolded_vertices = unfold(x, faces, adjacency);
   result = (x * edge).rowwise() + centre;
   if (!result.allFinite()) {
     error = "the solve produced non-finite positions";
     return false;
   }
   const Eigen::VectorXd moves = (result - positions).rowwise().norm();
+  clock.done("cap and unfold");
   report.max_displacement = moves.maxCoeff();
   report.rms_displacement = std::sqrt(moves.squaredNorm() / n);
   step(100, "Done");

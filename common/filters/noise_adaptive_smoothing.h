@@ -21,7 +21,7 @@
 #pragma once
 
 #include "signal/noise_estimate.h"
-#include "mesh/stage_clock.h"
+#include "util/stage_clock.h"
 
 #include <functional>
 
@@ -31,10 +31,9 @@ namespace hht {
 // corpus (docs/quality.md).
 constexpr double kMuScale = 0.233;
 constexpr double kTangentialCap = 7.0;
-// The solve stops at this relative residual (far below a visible change; measured against a
-// direct solve in tests/unit/noise_adaptive_smoothing_test.cpp).
-constexpr double kSmoothingTolerance = 1e-8;
-constexpr int kSmoothingMaxIterations = 5000;
+// The solve stops once no vertex can be further than this, relative to the bounding-box
+// diagonal, from the exact least-squares solution (a proven bound: biharmonic_low_pass.h).
+constexpr double kSmoothingMaxError = 1e-5;
 
 struct NoiseAdaptiveSmoothingOptions {
   double noise = 0;            // sigma / mean edge length; 0 or less: estimated
@@ -50,9 +49,9 @@ struct NoiseAdaptiveSmoothingReport {
   double mu = 0;
   double max_displacement = 0;
   double rms_displacement = 0;
-  int unfolded_vertices = 0;
+  int unfolded_vertices = 0;   // moved to their one-ring centroid to undo a fold
   int iterations = 0;          // conjugate gradient iterations of the solve
-  double relative_residual = 0;   // moved to their one-ring centroid to undo a fold
+  double error_bound = 0;      // largest position error of the solve, at most, / bbox diagonal
   std::vector<StageTime> stages;
 };
 

@@ -5,7 +5,7 @@
 
 #include "cycle/cycle_decomposition.h"
 #include "reconstruction/laplacian_reconstruction.h"
-#include "mesh/stage_clock.h"
+#include "util/stage_clock.h"
 
 #include <functional>
 #include <string>

@@ -9,7 +9,7 @@
 
 #include "reconstruction/laplacian_reconstruction.h"
 #include "mesh/sharp_features.h"
-#include "mesh/stage_clock.h"
+#include "util/stage_clock.h"
 #include "filters/surface_emd.h"
 
 #include <string>

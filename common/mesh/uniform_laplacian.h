@@ -2,20 +2,20 @@
 // neighbours of i. Its weights depend on connectivity only, so unlike the cotangent Laplacian
 // it stays well-behaved on slivers and obtuse triangles, and it also pulls tangential noise
 // out (MeshLab's Laplacian and Taubin smoothers use it). Vertices of no face get a zero row.
+// L = D^-1 K with K = D - A the symmetric graph Laplacian (D the valences, A the adjacency),
+// which lets solvers apply L and L^T from the adjacency alone, without a matrix.
 #pragma once
 
-#include "mesh/mesh_arrays.h"
+#include "mesh/vertex_adjacency.h"
 
 #include <Eigen/Sparse>
 
-#include <vector>
-
 namespace hht {
 
-// One-ring neighbours of each vertex, sorted, without repetitions.
-std::vector<std::vector<int>> vertex_neighbours(const Faces& faces, int vertex_count);
-
 // L = I - D^-1 A (n x n, not symmetric).
-Eigen::SparseMatrix<double> uniform_laplacian(const std::vector<std::vector<int>>& neighbours);
+Eigen::SparseMatrix<double> uniform_laplacian(const VertexAdjacency& adjacency);
+
+// out = K y (rows are points; on two threads for large meshes).
+void apply_graph_laplacian(const VertexAdjacency& adjacency, const Positions& y, Positions& out);
 
 }  // namespace hht

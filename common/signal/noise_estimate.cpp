@@ -3,7 +3,8 @@
 #include "cycle/cycle_signal.h"
 #include "evaluation/gaussian_noise.h"
 #include "mesh/mesh_checks.h"
-#include "mesh/uniform_laplacian.h"
+#include "mesh/vertex_adjacency.h"
+#include "util/parallel_for.h"
 #include "mesh/vertex_normals.h"
 
 #include <algorithm>
@@ -12,25 +13,6 @@
 namespace hht {
 
 namespace {
-
-std::vector<unsigned char> boundary_vertices(const Faces& faces, int n) {
-  std::vector<std::pair<int, int>> edges;
-  edges.reserve(3 * faces.rows());
-  for (Eigen::Index f = 0; f < faces.rows(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const int a = faces(f, k), b = faces(f, (k + 1) % 3);
-      edges.emplace_back(std::min(a, b), std::max(a, b));
-    }
-  std::sort(edges.begin(), edges.end());
-  std::vector<unsigned char> boundary(n, 0);
-  for (size_t i = 0; i < edges.size();) {
-    size_t j = i;
-    while (j < edges.size() && edges[j] == edges[i]) ++j;
-    if (j - i == 1) boundary[edges[i].first] = boundary[edges[i].second] = 1;
-    i = j;
-  }
-  return boundary;
-}
 
 double median(std::vector<double> v) {
   if (v.empty()) return 0;
@@ -41,12 +23,18 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
-Eigen::VectorXd one_ring_heights(const Positions& positions, const Faces& faces) {
+Eigen::VectorXd one_ring_heights(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency) {
   const int n = static_cast<int>(positions.rows());
   const Positions normals = area_weighted_vertex_normals(positions, faces);
-  const Positions offsets = uniform_laplacian(vertex_neighbours(faces, n)) * positions;
-  Eigen::VectorXd h(n);
-  for (int i = 0; i < n; ++i) h[i] = offsets.row(i).dot(normals.row(i));
+  Eigen::VectorXd h = Eigen::VectorXd::Zero(n);
+  parallel_for(0, n, [&](int first, int last) {
+    for (int i = first; i < last; ++i) {
+      if (adjacency.valence(i) == 0) continue;
+      Eigen::RowVector3d mean = Eigen::RowVector3d::Zero();
+      for (const int* j = adjacency.begin(i); j != adjacency.end(i); ++j) mean += positions.row(*j);
+      h[i] = (positions.row(i) - mean / adjacency.valence(i)).dot(normals.row(i));
+    }
+  });
   return h;
 }
 
@@ -56,9 +44,8 @@ bool estimate_noise(const Positions& positions, const Faces& faces, const Hamilt
   if (!check_triangle_mesh(positions, faces, error)) return false;
   const int n = static_cast<int>(positions.rows());
   out.mean_edge = mean_edge_length(positions, faces);
-  const auto neighbours = vertex_neighbours(faces, n);
-  const auto boundary = boundary_vertices(faces, n);
-  const Eigen::VectorXd h = one_ring_heights(positions, faces);
+  const VertexAdjacency adjacency = vertex_adjacency(faces, n);
+  const Eigen::VectorXd h = one_ring_heights(positions, faces, adjacency);
 
   std::vector<double> finest;
   double inverse_valence = 0;
@@ -71,9 +58,9 @@ bool estimate_noise(const Positions& positions, const Faces& faces, const Hamilt
     if (e.imfs.empty()) continue;
     for (size_t t = 0; t < segments[s].size(); ++t) {
       const int v = cycle.order[cycle.segment_begin[s] + static_cast<int>(t)];
-      if (boundary[v] || neighbours[v].empty()) continue;
+      if (adjacency.boundary[v] || adjacency.valence(v) == 0) continue;
       finest.push_back(e.imfs[0][t]);
-      inverse_valence += 1.0 / static_cast<double>(neighbours[v].size());
+      inverse_valence += 1.0 / static_cast<double>(adjacency.valence(v));
       ++interior;
     }
   }

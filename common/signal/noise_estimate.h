@@ -21,6 +21,7 @@
 #include "signal/emd.h"
 #include "cycle/hamiltonian_cycle.h"
 #include "mesh/mesh_arrays.h"
+#include "mesh/vertex_adjacency.h"
 
 #include <string>
 
@@ -38,7 +39,7 @@ struct NoiseEstimate {
 constexpr double kImf1Share = 1.0;
 
 // Per-vertex height over the one-ring mean, along the normal (0 for vertices of no face).
-Eigen::VectorXd one_ring_heights(const Positions& positions, const Faces& faces);
+Eigen::VectorXd one_ring_heights(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency);
 
 // Fails on a mesh without faces or with non-finite coordinates. `cycle` is hamiltonian_cycle()
 // of the same faces.

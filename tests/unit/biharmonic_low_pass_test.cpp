@@ -1,0 +1,74 @@
+#include "evaluation/gaussian_noise.h"
+#include "mesh/uniform_laplacian.h"
+#include "mesh/vertex_adjacency.h"
+#include "reconstruction/biharmonic_low_pass.h"
+#include "test_meshes.h"
+
+#include <Eigen/SparseCholesky>
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+
+namespace hht {
+namespace {
+
+// The flat adjacency against a plain per-face construction, and its boundary flags against the
+// edges met once, on a mesh with holes and an unreferenced vertex.
+TEST(VertexAdjacency, MatchesTheFacesOneRingsAndBoundary) {
+  test::ArrayMesh m = test::remove_faces(test::load_data_mesh("fandisk"), 7);
+  m.positions.conservativeResize(m.positions.rows() + 1, 3);
+  m.positions.row(m.positions.rows() - 1).setZero();
+  const int n = static_cast<int>(m.positions.rows());
+  std::vector<std::set<int>> rings(n);
+  std::map<std::pair<int, int>, int> edge_faces;
+  for (Eigen::Index f = 0; f < m.faces.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = m.faces(f, k), b = m.faces(f, (k + 1) % 3);
+      rings[a].insert(b);
+      rings[b].insert(a);
+      ++edge_faces[{std::min(a, b), std::max(a, b)}];
+    }
+  std::vector<unsigned char> boundary(n, 0);
+  int boundary_count = 0;
+  for (const auto& [edge, count] : edge_faces)
+    if (count == 1) boundary[edge.first] = boundary[edge.second] = 1;
+  const VertexAdjacency adjacency = vertex_adjacency(m.faces, n);
+  ASSERT_EQ(adjacency.vertices(), n);
+  for (int i = 0; i < n; ++i) {
+    EXPECT_EQ(std::vector<int>(adjacency.begin(i), adjacency.end(i)), std::vector<int>(rings[i].begin(), rings[i].end()));
+    EXPECT_EQ(adjacency.boundary[i], boundary[i]) << i;
+    boundary_count += boundary[i];
+  }
+  EXPECT_GT(boundary_count, 0);
+  EXPECT_EQ(adjacency.valence(n - 1), 0);
+}
+
+// The matrix-free solve against a direct factorisation of ((L^2)^T L^2 + mu^4 I) x = mu^4 v, on an
+// irregular mesh with holes: the true error stays within the bound it stops at.
+TEST(BiharmonicLowPass, MatchesADirectSolveWithinItsBound) {
+  const test::ArrayMesh m = test::remove_faces(test::flip_random_edges(test::sphere(4), 2000, 3), 9);
+  const Positions v = add_gaussian_noise(m.positions, m.faces, 30, NoiseDirection::Isotropic, 8);
+  const int n = static_cast<int>(v.rows());
+  const VertexAdjacency adjacency = vertex_adjacency(m.faces, n);
+  const Eigen::SparseMatrix<double> l = uniform_laplacian(adjacency);
+  const Eigen::SparseMatrix<double> l2 = l * l;
+  for (double mu : {0.3, 0.8}) {
+    const double mu4 = std::pow(mu, 4);
+    Eigen::SparseMatrix<double> a = Eigen::SparseMatrix<double>(l2.transpose()) * l2;
+    for (int i = 0; i < n; ++i) a.coeffRef(i, i) += mu4;
+    const Positions expected = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>(a).solve(Positions(mu4 * v));
+    for (double max_error : {1e-3, 1e-7}) {
+      Positions x;
+      BiharmonicLowPassReport report;
+      ASSERT_TRUE(biharmonic_low_pass(adjacency, v, mu, max_error, x, report));
+      EXPECT_GT(report.iterations, 0);
+      EXPECT_LE(report.error_bound, max_error);
+      EXPECT_LE((x - expected).norm(), max_error) << mu;
+      EXPECT_GT((v - expected).norm(), 100 * max_error);  // the solution is not the start
+    }
+  }
+}
+
+}  // namespace
+}  // namespace hht
