@@ -112,10 +112,10 @@ bool apply(FilterRun& run) {
   run.log(QString("  %1 IMFs (mean frequency, energy share):").arg(report.imfs.size()));
   for (const QString& line : imf_summary_lines(report.imfs)) run.log(line);
   run.log(QString("  RMS change of the curvature signal %1; reconstruction: lambda %2, %3 target, %4 CG iterations, "
-                  "relative residual %5")
+                  "position error below %5 of the diagonal")
               .arg(report.signal_change_rms).arg(options.reconstruction.lambda)
               .arg(par.getBool("literalTarget") ? "literal (normal only)" : "keep-tangential")
-              .arg(report.reconstruction.iterations).arg(report.reconstruction.relative_residual, 0, 'g', 3));
+              .arg(report.reconstruction.iterations).arg(report.reconstruction.error_bound, 0, 'g', 3));
   if (report.restored_vertices > 0)
     run.log(QString("  %1 vertices put back where the enhancement would have turned faces over").arg(report.restored_vertices));
   run.log(QString("  largest vertex move %1 (%2% of the bounding-box diagonal)")

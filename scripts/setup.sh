@@ -12,6 +12,9 @@ PACKAGES=(
   build-essential cmake pkg-config dpkg-dev xz-utils
   meshlab qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev
   libeigen3-dev libsuitesparse-dev libfftw3-dev libgtest-dev
+  # CHOLMOD's supernodal factorisation is BLAS-bound: Debian's reference BLAS is several times
+  # slower (docs/benchmarks.md); OpenBLAS takes over libblas.so.3 through the alternatives.
+  libopenblas0-pthread
   xvfb xauth libgl1-mesa-dri libcgal-demo bc time
 )
 

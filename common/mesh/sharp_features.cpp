@@ -3,6 +3,7 @@
 #include "mesh/corner_table.h"
 #include "cycle/feature_lines.h"
 #include "mesh/mesh_checks.h"
+#include "util/parallel_for.h"
 
 #include <Eigen/Eigenvalues>
 
@@ -39,6 +40,7 @@ struct Topology {
   Faces faces;                           // coherently oriented copy of the input
   std::vector<std::array<int, 2>> edge_vertices;
   std::vector<std::array<int, 2>> edge_faces;  // second face -1 on the mesh boundary
+  std::vector<int> corner_edge;          // per corner (3 f + k): the edge opposite it
   Lists vertex_faces, vertex_edges;
   Lists face_faces;                      // faces sharing a vertex with the face, itself included
 };
@@ -53,9 +55,12 @@ bool build_topology(const Faces& faces, int vertex_count, Topology& topo, std::s
     if (!orient_faces_coherently(topo.faces, table, error)) return false;
     if (!build_corner_table(topo.faces, vertex_count, table, inconsistent, error)) return false;
   }
+  topo.corner_edge.assign(table.corners(), -1);
   for (int c = 0; c < table.corners(); ++c) {
     const int o = table.opposite[c];
     if (o >= 0 && o < c) continue;
+    topo.corner_edge[c] = static_cast<int>(topo.edge_vertices.size());
+    if (o >= 0) topo.corner_edge[o] = topo.corner_edge[c];
     topo.edge_vertices.push_back({table.vertex[corner_next(c)], table.vertex[corner_prev(c)]});
     topo.edge_faces.push_back({c / 3, o >= 0 ? o / 3 : -1});
   }
@@ -122,41 +127,49 @@ Positions guidance(const Topology& topo, const FaceGeometry& g, const Positions&
     const auto& ef = topo.edge_faces[e];
     saliency[e] = ef[1] >= 0 ? (n.row(ef[0]) - n.row(ef[1])).norm() : 0.0;
   }
-  for (int j = 0; j < nf; ++j) {
-    Eigen::RowVector3d m = Eigen::RowVector3d::Zero();
-    for (int i = topo.face_faces.begin(j); i < topo.face_faces.end(j); ++i) {
-      const int k = topo.face_faces.items[i];
-      m += g.areas[k] * n.row(k);
-    }
-    const double len = m.norm();
-    if (len > 0) m /= len;
-    double deviation = 0;
-    for (int i = topo.face_faces.begin(j); i < topo.face_faces.end(j); ++i)
-      deviation = std::max(deviation, (n.row(topo.face_faces.items[i]) - m).squaredNorm());
-    double largest = 0, sum = 0;
-    for (int k = 0; k < 3; ++k) {
-      const int v = topo.faces(j, k);
+  // The patch's edges are those at the face's three vertices: per vertex, the largest and the
+  // sum of its edges' saliencies; the face's own edges, met at both their ends, are taken once.
+  const int nv = static_cast<int>(topo.vertex_edges.start.size()) - 1;
+  std::vector<double> vertex_largest(nv, 0.0), vertex_sum(nv, 0.0);
+  parallel_for(0, nv, [&](int first, int last) {
+    for (int v = first; v < last; ++v)
       for (int i = topo.vertex_edges.begin(v); i < topo.vertex_edges.end(v); ++i) {
-        const int e = topo.vertex_edges.items[i];
-        const auto& ev = topo.edge_vertices[e];
-        const int w = ev[0] == v ? ev[1] : ev[0];
-        // an edge of face j itself is reached from both its ends: count it once
-        if (w < v && (w == topo.faces(j, 0) || w == topo.faces(j, 1) || w == topo.faces(j, 2))) continue;
-        largest = std::max(largest, saliency[e]);
-        sum += saliency[e];
+        vertex_largest[v] = std::max(vertex_largest[v], saliency[topo.vertex_edges.items[i]]);
+        vertex_sum[v] += saliency[topo.vertex_edges.items[i]];
       }
+  });
+  parallel_for(0, nf, [&](int first, int last) {
+    for (int j = first; j < last; ++j) {
+      Eigen::RowVector3d m = Eigen::RowVector3d::Zero();
+      for (int i = topo.face_faces.begin(j); i < topo.face_faces.end(j); ++i) {
+        const int k = topo.face_faces.items[i];
+        m += g.areas[k] * n.row(k);
+      }
+      const double len = m.norm();
+      if (len > 0) m /= len;
+      double deviation = 0;
+      for (int i = topo.face_faces.begin(j); i < topo.face_faces.end(j); ++i)
+        deviation = std::max(deviation, (n.row(topo.face_faces.items[i]) - m).squaredNorm());
+      double largest = 0, sum = 0;
+      for (int k = 0; k < 3; ++k) {
+        const int v = topo.faces(j, k);
+        largest = std::max(largest, vertex_largest[v]);
+        sum += vertex_sum[v] - saliency[topo.corner_edge[3 * j + k]];
+      }
+      mean.row(j) = m;
+      consistency[j] = std::sqrt(deviation) * largest / (1e-9 + sum);
     }
-    mean.row(j) = m;
-    consistency[j] = std::sqrt(deviation) * largest / (1e-9 + sum);
-  }
-  for (int f = 0; f < nf; ++f) {
-    int best = f;
-    for (int i = topo.face_faces.begin(f); i < topo.face_faces.end(f); ++i) {
-      const int j = topo.face_faces.items[i];
-      if (consistency[j] < consistency[best]) best = j;
+  });
+  parallel_for(0, nf, [&](int first, int last) {
+    for (int f = first; f < last; ++f) {
+      int best = f;
+      for (int i = topo.face_faces.begin(f); i < topo.face_faces.end(f); ++i) {
+        const int j = topo.face_faces.items[i];
+        if (consistency[j] < consistency[best]) best = j;
+      }
+      guide.row(f) = mean.row(best);
     }
-    guide.row(f) = mean.row(best);
-  }
+  });
   return guide;
 }
 
@@ -176,26 +189,30 @@ Positions filter_normals(const Topology& topo, const FaceGeometry& g, int iterat
   const double inv_s = 1.0 / (2 * sigma_s * sigma_s), inv_r = 1.0 / (2 * sigma_r * sigma_r);
   // area times spatial kernel, per (face, neighbour) pair: fixed over the iterations
   std::vector<float> spatial(topo.face_faces.items.size());
-  for (int f = 0; f < nf; ++f)
-    for (int i = topo.face_faces.begin(f); i < topo.face_faces.end(f); ++i) {
-      const int j = topo.face_faces.items[i];
-      spatial[i] = static_cast<float>(
-          g.areas[j] * std::exp(-(g.centroids.row(f) - g.centroids.row(j)).squaredNorm() * inv_s));
-    }
+  parallel_for(0, nf, [&](int first, int last) {
+    for (int f = first; f < last; ++f)
+      for (int i = topo.face_faces.begin(f); i < topo.face_faces.end(f); ++i) {
+        const int j = topo.face_faces.items[i];
+        spatial[i] = static_cast<float>(
+            g.areas[j] * std::exp(-(g.centroids.row(f) - g.centroids.row(j)).squaredNorm() * inv_s));
+      }
+  });
 
   Positions n = g.normals, next(nf, 3);
   for (int it = 0; it < iterations; ++it) {
     const Positions guide = guidance(topo, g, n);
-    for (int f = 0; f < nf; ++f) {
-      Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
-      for (int i = topo.face_faces.begin(f); i < topo.face_faces.end(f); ++i) {
-        const int j = topo.face_faces.items[i];
-        const float range = static_cast<float>((guide.row(f) - guide.row(j)).squaredNorm() * inv_r);
-        sum += (spatial[i] * std::exp(-range)) * n.row(j);
+    parallel_for(0, nf, [&](int first, int last) {
+      for (int f = first; f < last; ++f) {
+        Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
+        for (int i = topo.face_faces.begin(f); i < topo.face_faces.end(f); ++i) {
+          const int j = topo.face_faces.items[i];
+          const float range = static_cast<float>((guide.row(f) - guide.row(j)).squaredNorm() * inv_r);
+          sum += (spatial[i] * std::exp(-range)) * n.row(j);
+        }
+        const double len = sum.norm();
+        next.row(f) = len > 0 ? Eigen::RowVector3d(sum / len) : n.row(f);
       }
-      const double len = sum.norm();
-      next.row(f) = len > 0 ? Eigen::RowVector3d(sum / len) : n.row(f);
-    }
+    });
     n.swap(next);
   }
   return n;

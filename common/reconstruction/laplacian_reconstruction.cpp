@@ -62,6 +62,11 @@ bool reconstruct_positions(const Positions& positions, const Faces& faces, const
     return c * (inv_area2.asDiagonal() * (c * x)) + lambda2 * x;
   };
 
+  // Proven bound on the position error (scaled units), and the stop in those units.
+  const double diagonal = (v.colwise().maxCoeff() - v.colwise().minCoeff()).norm();
+  auto error_bound = [&](const Positions& residual) { return residual.norm() / lambda2; };
+  const double max_error = options.max_error * diagonal;
+
   Positions x = v;
   auto t0 = Clock::now();
   if (options.direct) {
@@ -77,7 +82,7 @@ bool reconstruct_positions(const Positions& positions, const Faces& faces, const
     x = solver.solve(b);
     report.solve_seconds = since(t0);
     report.iterations = 0;
-    report.relative_residual = (b - apply_a(x)).norm() / std::max(b.norm(), 1e-300);
+    report.error_bound = error_bound(b - apply_a(x)) / diagonal;
   } else {
     const Sparse k = c + options.lambda * Sparse(area.asDiagonal());
     Eigen::CholmodDecomposition<Sparse> factor;
@@ -97,10 +102,9 @@ bool reconstruct_positions(const Positions& positions, const Faces& faces, const
     Positions z = precondition(r);
     Positions p = z;
     Eigen::RowVector3d rz = (r.array() * z.array()).colwise().sum();
-    const Eigen::RowVector3d b_norm = b.colwise().norm().cwiseMax(1e-300);
     int it = 0;
-    double worst = (r.colwise().norm().array() / b_norm.array()).maxCoeff();
-    while (worst > options.tolerance && it < options.max_iterations) {
+    double bound = error_bound(r);
+    while (bound > max_error && it < options.max_iterations) {
       const Positions ap = apply_a(p);
       const Eigen::RowVector3d pap = (p.array() * ap.array()).colwise().sum();
       Eigen::RowVector3d alpha;
@@ -114,14 +118,14 @@ bool reconstruct_positions(const Positions& positions, const Faces& faces, const
       p = z + p * beta.asDiagonal();
       rz = rz_next;
       ++it;
-      worst = (r.colwise().norm().array() / b_norm.array()).maxCoeff();
+      bound = error_bound(r);
     }
     report.iterations = it;
-    report.relative_residual = worst;
+    report.error_bound = bound / diagonal;
     report.solve_seconds = since(t0);
-    if (worst > options.tolerance) {
-      error = "conjugate gradients stopped at relative residual " + std::to_string(worst) + " after " +
-              std::to_string(it) + " iterations";
+    if (bound > max_error) {
+      error = "conjugate gradients stopped with a possible position error of " + std::to_string(bound / diagonal) +
+              " of the diagonal after " + std::to_string(it) + " iterations";
       return false;
     }
   }

@@ -24,21 +24,23 @@ enum class ReconstructionTarget { NormalOnly, KeepTangential };
 struct ReconstructionOptions {
   double lambda = 0.01;  // weight of the original positions, relative to the mean edge length
   ReconstructionTarget target = ReconstructionTarget::KeepTangential;
-  double tolerance = 1e-10;  // relative residual ||b - A x|| / ||b|| at which CG stops
+  // CG stops once no vertex can be further than this, relative to the bounding-box diagonal,
+  // from the exact solution: A >= lambda^2 I, so ||x - x*||_2 <= ||b - A x||_2 / lambda^2.
+  double max_error = 1e-5;
   int max_iterations = 500;
   bool direct = false;  // factor A itself (exact, slow at scale; for checking the iterative solve)
 };
 
 struct ReconstructionReport {
   int iterations = 0;
-  double relative_residual = 0;
+  double error_bound = 0;  // the bound above at the stop, relative to the bounding-box diagonal
   double factor_seconds = 0;
   double solve_seconds = 0;
 };
 
 // `curvature` is mean_curvature() of (positions, faces); `signal` is the modified G~ (one
 // value per vertex). Fails with a message when the factorisation fails or CG does not reach
-// the tolerance; `result` is then unspecified.
+// max_error; `result` is then unspecified.
 bool reconstruct_positions(const Positions& positions, const Faces& faces, const MeanCurvature& curvature,
                            const Eigen::VectorXd& signal, const ReconstructionOptions& options,
                            Positions& result, ReconstructionReport& report, std::string& error);
