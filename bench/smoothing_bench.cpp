@@ -1,15 +1,18 @@
 // Times the filters of the shipped scripts in the library (no file I/O), stage by stage, with the
 // settings of resources/smooth.mlx (HHT: Adaptive Smooth), enhance.mlx (HHT: Spectral Filter,
 // gain 2 above 0.1, lambda 0.1) or denoise.mlx (HHT: Feature-Preserving Denoise); prints one
-// Markdown row per mesh: each stage's seconds, the total, the solver's iterations and the peak
-// resident memory of the process (input arrays included).
+// Markdown row per mesh: each stage's seconds, the total, the solver's iterations, the peak
+// resident memory of the process (input arrays included) and the peak during each stage the
+// progress callback names (the peak is reset at every change of stage).
 //   smoothing_bench smooth|enhance|denoise mesh.ply [more meshes]
 #include "bench_util.h"
 #include "filters/feature_preserving_denoise.h"
 #include "filters/noise_adaptive_smoothing.h"
 #include "filters/spectral_mesh_filter.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <functional>
 #include <cstring>
 
 namespace {
@@ -20,11 +23,31 @@ struct Run {
   std::string note;
 };
 
+// Peak resident memory per progress stage, in order of first appearance.
+struct StageMemory {
+  std::vector<std::pair<std::string, double>> peaks;
+  std::string current;
+  void operator()(int, const char* stage) {
+    if (stage == current) return;
+    close();
+    current = stage;
+  }
+  void close() {
+    if (!current.empty()) {
+      const double mb = hht::bench::memory_mb("VmHWM");
+      auto it = std::find_if(peaks.begin(), peaks.end(), [&](const auto& p) { return p.first == current; });
+      if (it == peaks.end()) peaks.emplace_back(current, mb);
+      else it->second = std::max(it->second, mb);
+    }
+    hht::bench::reset_peak_memory();
+  }
+};
+
 bool run(const char* method, const hht::Positions& positions, const hht::Faces& faces, hht::Positions& result, Run& out,
-         std::string& error) {
+         std::string& error, const std::function<void(int, const char*)>& progress) {
   if (!std::strcmp(method, "smooth")) {
     hht::NoiseAdaptiveSmoothingReport report;
-    const bool ok = hht::noise_adaptive_smooth(positions, faces, {}, result, report, error);
+    const bool ok = hht::noise_adaptive_smooth(positions, faces, {}, result, report, error, progress);
     out = {report.stages, report.iterations, "sigma " + std::to_string(report.sigma_used)};
     return ok;
   }
@@ -33,12 +56,12 @@ bool run(const char* method, const hht::Positions& positions, const hht::Faces& 
     options.gain = 2;
     options.reconstruction.lambda = 0.1;
     hht::SpectralMeshFilterReport report;
-    const bool ok = hht::spectral_mesh_filter(positions, faces, options, result, report, error);
+    const bool ok = hht::spectral_mesh_filter(positions, faces, options, result, report, error, progress);
     out = {report.stages, report.reconstruction.iterations, std::to_string(report.imfs.size()) + " IMFs"};
     return ok;
   }
   hht::DenoiseReport report;
-  const bool ok = hht::feature_preserving_denoise(positions, faces, {}, result, report, error);
+  const bool ok = hht::feature_preserving_denoise(positions, faces, {}, result, report, error, progress);
   out = {report.stages, report.reconstruction.iterations,
          "sigma " + std::to_string(report.sigma_used) + (report.untangled ? ", untangled" : "")};
   return ok;
@@ -51,8 +74,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: smoothing_bench smooth|enhance|denoise mesh.ply [more meshes]\n");
     return 2;
   }
-  std::printf("| mesh | vertices | method | stages (s) | total (s) | solver iterations | peak memory (MB) | note |\n");
-  std::printf("|---|---|---|---|---|---|---|---|\n");
+  std::printf("| mesh | vertices | method | stages (s) | total (s) | solver iterations | peak memory (MB) | peak per stage (MB) | note |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
   for (int i = 2; i < argc; ++i) {
     hht::Positions positions, result;
     hht::Faces faces;
@@ -63,13 +86,24 @@ int main(int argc, char** argv) {
     Run r;
     std::string error;
     bool ok = false;
+    StageMemory memory;
+    double peak = 0;
     hht::bench::reset_peak_memory();
-    const double total = hht::bench::seconds([&] { ok = run(argv[1], positions, faces, result, r, error); });
+    const double total = hht::bench::seconds([&] {
+      ok = run(argv[1], positions, faces, result, r, error, [&](int percent, const char* stage) {
+        peak = std::max(peak, hht::bench::memory_mb("VmHWM"));
+        memory(percent, stage);
+      });
+    });
+    peak = std::max(peak, hht::bench::memory_mb("VmHWM"));
+    memory.close();
     if (!ok) std::fprintf(stderr, "%s: %s\n", argv[i], error.c_str());
     std::string stages;
     for (const auto& s : r.stages) stages += std::string(stages.empty() ? "" : ", ") + s.stage + " " + std::to_string(s.seconds).substr(0, 5);
-    std::printf("| %s | %lld | %s | %s | %.2f | %d | %.0f | %s |\n", argv[i], static_cast<long long>(positions.rows()), argv[1],
-                stages.c_str(), total, r.iterations, hht::bench::memory_mb("VmHWM"), r.note.c_str());
+    std::string peaks;
+    for (const auto& [stage, mb] : memory.peaks) peaks += (peaks.empty() ? "" : ", ") + stage + " " + std::to_string(static_cast<int>(mb));
+    std::printf("| %s | %lld | %s | %s | %.2f | %d | %.0f | %s | %s |\n", argv[i], static_cast<long long>(positions.rows()), argv[1],
+                stages.c_str(), total, r.iterations, peak, peaks.c_str(), r.note.c_str());
     std::fflush(stdout);
   }
   return 0;
