@@ -181,7 +181,9 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     smoothing.noise = sigma;
     NoiseAdaptiveSmoothingReport smoothing_report;
     Positions smoothed;
-    if (!noise_adaptive_smooth(positions, faces, smoothing, smoothed, smoothing_report, error)) return false;
+    if (!noise_adaptive_smooth(positions, faces, smoothing, smoothed, smoothing_report, error,
+                               [&](int percent, const char*) { step(8 + 22 * percent / 100, "Untangling: noise-adaptive smoothing"); }))
+      return false;
     for (Eigen::Index f = 0; f < faces.rows(); ++f) {
       const auto normal = [&](const Positions& p) {
         const Eigen::RowVector3d a = p.row(faces(f, 0));
@@ -208,14 +210,18 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
   }
   report.refine_normal_passes = normal_passes;
   if (normal_passes > 0 && options.refine_vertex_iterations > 0) {
-    step(90, "Refinement: guided normal filtering and vertex update");
+    const int from = options.paper_stage ? 70 : 30;
+    step(from, "Refinement: guided normal filtering and vertex update");
     GuidedNormalDenoiseOptions refine;
     refine.rounds = report.refine_rounds;
     refine.normal_passes = normal_passes;
     refine.sigma = options.refine_normal_sigma;
     refine.vertex_iterations = options.refine_vertex_iterations;
     const Positions rebuilt = result;
-    if (!guided_normal_denoise(rebuilt, faces, refine, result, error)) return false;
+    if (!guided_normal_denoise(rebuilt, faces, refine, result, error, [&](double done) {
+          step(from + static_cast<int>((99 - from) * done), "Refinement: guided normal filtering and vertex update");
+        }))
+      return false;
     // Discrepancy bound: the refinement removes noise, so it may move vertices by about the
     // noise's RMS and no more; more is the guided filter faceting curved parts of the surface.
     const double edge = mean_edge_length(positions, faces);

@@ -7,7 +7,7 @@
 namespace hht {
 
 bool guided_normal_denoise(const Positions& positions, const Faces& faces, const GuidedNormalDenoiseOptions& options,
-                           Positions& result, std::string& error) {
+                           Positions& result, std::string& error, const std::function<void(double)>& progress) {
   if (!check_triangle_mesh(positions, faces, error)) return false;
   if (options.rounds < 0 || options.normal_passes < 0 || options.vertex_iterations < 0 || !(options.sigma > 0)) {
     error = "rounds, passes and iterations must be at least 0 and sigma positive";
@@ -17,7 +17,9 @@ bool guided_normal_denoise(const Positions& positions, const Faces& faces, const
   for (int round = 0; round < options.rounds; ++round) {
     Positions normals;
     if (!guided_face_normals(result, faces, options.normal_passes, options.sigma, normals, error)) return false;
+    if (progress) progress((round + 0.8) / options.rounds);
     result = fit_vertices_to_normals(result, faces, normals, options.vertex_iterations);
+    if (progress) progress((round + 1.0) / options.rounds);
   }
   if (!result.allFinite()) {
     error = "the vertex update produced non-finite positions";

@@ -8,6 +8,8 @@
 // denoiser is measured against, and the refinement stage of that denoiser.
 #pragma once
 
+#include <functional>
+
 #include "mesh/mesh_arrays.h"
 
 #include <string>
@@ -22,7 +24,8 @@ struct GuidedNormalDenoiseOptions {
 };
 
 // Fails like guided_face_normals on broken input (no faces, non-manifold, non-finite).
+// progress(fraction done) after each round's normal filtering and vertex update.
 bool guided_normal_denoise(const Positions& positions, const Faces& faces, const GuidedNormalDenoiseOptions& options,
-                           Positions& result, std::string& error);
+                           Positions& result, std::string& error, const std::function<void(double)>& progress = {});
 
 }  // namespace hht

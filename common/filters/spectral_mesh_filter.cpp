@@ -59,7 +59,8 @@ bool spectral_mesh_filter(const Positions& positions, const Faces& faces, const 
   report.signal_change_rms = std::sqrt((filtered - curvature.signal).squaredNorm() / std::max<Eigen::Index>(1, filtered.size()));
 
   step(55, "Reconstruction (Laplacian least squares)");
-  if (!reconstruct_positions(positions, faces, curvature, filtered, options.reconstruction, result, report.reconstruction, error))
+  if (!reconstruct_positions(positions, faces, curvature, filtered, options.reconstruction, result, report.reconstruction, error,
+                             [&](double done) { step(55 + static_cast<int>(44 * done), "Reconstruction (Laplacian least squares)"); }))
     return false;
   clock.done("reconstruction");
   // Enhancement amplifies the curvature signal where slivers make it erratic: undo the folds.

@@ -6,6 +6,7 @@
 #include <Eigen/CholmodSupport>
 
 #include <chrono>
+#include <cmath>
 
 namespace hht {
 
@@ -20,7 +21,11 @@ double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock:
 
 bool reconstruct_positions(const Positions& positions, const Faces& faces, const MeanCurvature& curvature,
                            const Eigen::VectorXd& signal, const ReconstructionOptions& options,
-                           Positions& result, ReconstructionReport& report, std::string& error) {
+                           Positions& result, ReconstructionReport& report, std::string& error,
+                           const std::function<void(double)>& progress) {
+  auto step = [&](double done) {
+    if (progress) progress(done);
+  };
   const Eigen::Index n = positions.rows();
   if (signal.size() != n || curvature.signal.size() != n) {
     error = "the signal has " + std::to_string(signal.size()) + " values for " + std::to_string(n) + " vertices";
@@ -92,6 +97,7 @@ bool reconstruct_positions(const Positions& positions, const Faces& faces, const
       return false;
     }
     report.factor_seconds = since(t0);
+    step(0.3);
     t0 = Clock::now();
     auto precondition = [&](const Positions& r) -> Positions {
       const Positions y = factor.solve(r);
@@ -104,6 +110,7 @@ bool reconstruct_positions(const Positions& positions, const Faces& faces, const
     Eigen::RowVector3d rz = (r.array() * z.array()).colwise().sum();
     int it = 0;
     double bound = error_bound(r);
+    const double start = std::max(bound, max_error);
     while (bound > max_error && it < options.max_iterations) {
       const Positions ap = apply_a(p);
       const Eigen::RowVector3d pap = (p.array() * ap.array()).colwise().sum();
@@ -119,6 +126,7 @@ bool reconstruct_positions(const Positions& positions, const Faces& faces, const
       rz = rz_next;
       ++it;
       bound = error_bound(r);
+      step(0.3 + 0.7 * std::log(start / std::max(bound, max_error)) / std::log(start / max_error));
     }
     report.iterations = it;
     report.error_bound = bound / diagonal;

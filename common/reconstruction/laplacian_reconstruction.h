@@ -13,6 +13,8 @@
 // K = C + lambda M (1-ring, factored once by CHOLMOD): K M^-2 K ~ A up to O(lambda) terms.
 #pragma once
 
+#include <functional>
+
 #include "mesh/mean_curvature.h"
 
 #include <string>
@@ -41,8 +43,10 @@ struct ReconstructionReport {
 // `curvature` is mean_curvature() of (positions, faces); `signal` is the modified G~ (one
 // value per vertex). Fails with a message when the factorisation fails or CG does not reach
 // max_error; `result` is then unspecified.
+// progress(fraction done) follows the factorisation and the iterations.
 bool reconstruct_positions(const Positions& positions, const Faces& faces, const MeanCurvature& curvature,
                            const Eigen::VectorXd& signal, const ReconstructionOptions& options,
-                           Positions& result, ReconstructionReport& report, std::string& error);
+                           Positions& result, ReconstructionReport& report, std::string& error,
+                           const std::function<void(double)>& progress = {});
 
 }  // namespace hht

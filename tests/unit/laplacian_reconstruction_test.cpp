@@ -128,7 +128,10 @@ TEST_P(IndependentSolve, ChangedSignalMatchesADirectSolveWithThePlainLaplacian) 
   const Positions expected = solver.solve(Positions(lap.l.transpose() * target + mu2 * m.positions));
   const double moved = max_displacement(expected, m.positions);
   EXPECT_GT(moved, 5e-4 * diagonal(m.positions)) << "the change must move the mesh";
-  EXPECT_LT(max_displacement(s.positions, expected), 1e-7 * moved);  // measured 1.2e-9 to 6.7e-9
+  // within the solver's proven bound, which is far below the move (a wrong system is off by
+  // about the move itself)
+  EXPECT_LT(max_displacement(s.positions, expected), options.max_error * diagonal(m.positions));
+  EXPECT_LT(options.max_error * diagonal(m.positions), 0.05 * moved);
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, IndependentSolve, ::testing::Values("fandisk", "sphere5", "elephant-with-holes"));
