@@ -6,6 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
 namespace hht {
 namespace {
 
@@ -111,6 +116,32 @@ TEST(FeaturePreservingDenoise, UntanglesNoiseInEveryDirection) {
   EXPECT_GT(report.flipped_faces, 0.0075 * m.faces.rows());
   EXPECT_LT(ours, 0.35 * guided_only(m, noisy));
   EXPECT_LT(ours, 4.5);
+}
+
+// MeshLab's progress bar: it never goes back, ends at 100, and moves inside the two long stages
+// (the untangling smoothing and the refinement rounds), not only at their starts.
+TEST(FeaturePreservingDenoise, ProgressMovesThroughEveryLongStage) {
+  const test::ArrayMesh m = test::load_data_mesh("fandisk");
+  const Positions noisy = add_gaussian_noise(m.positions, m.faces, 30, NoiseDirection::Isotropic, 11);
+  std::vector<std::pair<int, std::string>> calls;
+  Positions result;
+  DenoiseReport report;
+  std::string error;
+  ASSERT_TRUE(feature_preserving_denoise(noisy, m.faces, {}, result, report, error,
+                                         [&](int percent, const char* stage) { calls.emplace_back(percent, stage); }))
+      << error;
+  ASSERT_TRUE(report.untangled);
+  ASSERT_GT(report.refine_rounds, 1);
+  for (size_t i = 1; i < calls.size(); ++i) EXPECT_GE(calls[i].first, calls[i - 1].first) << calls[i].second;
+  EXPECT_EQ(calls.back().first, 100);
+  auto distinct_percents = [&](const std::string& prefix) {
+    std::set<int> seen;
+    for (const auto& [percent, stage] : calls)
+      if (stage.rfind(prefix, 0) == 0) seen.insert(percent);
+    return seen.size();
+  };
+  EXPECT_GE(distinct_percents("Untangling"), 3u);
+  EXPECT_GE(distinct_percents("Refinement"), 3u);
 }
 
 TEST(FeaturePreservingDenoise, CleanInputStaysClean) {
