@@ -72,6 +72,13 @@ def meshlab_filter(name, **params):
     return "\n".join(lines)
 
 
+# The surface EMD factors the whole mesh's bi-harmonic system twice per sift (6-7 sifts for the
+# 3 IMFs here: 9 s at 37,706 vertices; Table 1 of docs/benchmarks.md: 53 s for 6 IMFs at 70k):
+# meshes above this many vertices are skipped for the two surface EMD methods.
+SURFACE_EMD_VERTEX_LIMIT = 50000
+VERTEX_LIMITS = {"surface_emd": SURFACE_EMD_VERTEX_LIMIT, "fc_emd": SURFACE_EMD_VERTEX_LIMIT}
+
+
 def methods():
     """(key, label, filter xml) in table order."""
     return [
@@ -89,12 +96,21 @@ def methods():
         ("twostep", "TwoStep Smooth (defaults: 3, 60 deg, 20, 20)",
          meshlab_filter("TwoStep Smooth", stepSmoothNum=3, normalThr=60.0, stepNormalNum=20, stepFitNum=20,
                         Selected=False)),
+        ("nlm", "Non-Local Means Denoising (nonlocal_means.mlx: eta 3, 1.3, 1.0, 1 iteration)",
+         resource_filter("nonlocal_means")),
+        # maxImfs 3 = the residue the scripts rebuild from: IMFs 1-3 and so the result are the same
+        # as with no cap, the later IMFs are not computed.
+        ("surface_emd", "HHT: Surface EMD, rebuilt from residue 3 (surface_emd_smooth.mlx, maxImfs 3)",
+         resource_filter("surface_emd_smooth", maxImfs=3)),
+        ("fc_emd", "HHT: Feature-Centric Surface EMD, residue 3 (feature_centric_emd.mlx, maxImfs 3)",
+         resource_filter("feature_centric_emd", maxImfs=3)),
     ]
 
 
 SHORT = {"smooth": "smooth", "denoise": "denoise", "guided": "guided", "spectral": "spectral (menu)",
          "bilateral": "bilateral", "taubin": "Taubin", "hc": "HC", "laplacian": "Laplacian",
-         "twostep": "TwoStep", "enhance": "enhance.mlx"}
+         "twostep": "TwoStep", "nlm": "NLM", "surface_emd": "3D-EMD", "fc_emd": "FC-EMD",
+         "enhance": "enhance.mlx"}
 
 
 # ----------------------------------------------------------------------------------------------
@@ -309,9 +325,14 @@ def evaluate_case(corpus, work, previous, mesh, model, level, method_list, log):
         row["noisy"] = {"E_a": 0.0, "RMS": 0.0, "flipped": 0}
     row["meta"] = {"mesh": mesh, "model": model, "level": level}
     for key, _label, xml in method_list:
-        if key in row and "error" not in row[key]:  # --resume runs failed ones again
+        if key in row and "error" not in row[key] and "skipped" not in row[key]:  # --resume runs failed ones again
             continue
         tag = "%s_%s" % (name, key)
+        limit = VERTEX_LIMITS.get(key)
+        if limit is not None and len(c["v"]) > limit:
+            row[key] = {"skipped": "%d vertices > %d" % (len(c["v"]), limit)}
+            log("%-28s %-10s %s" % (name, key, json.dumps(row[key])))
+            continue
         try:
             out, ev, seconds = run_server(work, tag, c["path"], input_path, xml)
             v, faces = read_ply(out)
@@ -339,7 +360,7 @@ def case_table(results, names, method_keys, labels):
     lines = [head, "|" + "---|" * (2 + len(method_keys))]
     for name in names:
         row = results[name]
-        ok = [k for k in method_keys if "error" not in row[k]]
+        ok = [k for k in method_keys if "error" not in row[k] and "skipped" not in row[k]]
         best_a = min((row[k]["E_a"] for k in ok), default=None)
         best_r = min((row[k]["RMS"] for k in ok), default=None)
         cells = []
@@ -347,6 +368,9 @@ def case_table(results, names, method_keys, labels):
             r = row[k]
             if "error" in r:
                 cells.append("failed")
+                continue
+            if "skipped" in r:
+                cells.append("skipped: %s" % r["skipped"])
                 continue
             a, rms = fmt(r["E_a"], 2), fmt(r["RMS"], 0)
             if r["E_a"] == best_a:
@@ -370,13 +394,17 @@ def label_case(meta):
 def summary_table(results, names, method_keys):
     noisy_names = [n for n in names if results[n]["meta"]["level"] > 0]
     lines = ["| method | beats Taubin on E_a and RMS | E_a <= noisy | RMS <= noisy | both <= noisy | "
-             "cases with flipped faces | failed | mean time (s) |", "|---|---|---|---|---|---|---|---|"]
-    total = len(noisy_names)
+             "cases with flipped faces | failed | skipped (too large) | mean time (s) |",
+             "|---|---|---|---|---|---|---|---|---|"]
     for k in method_keys:
         beats = ea_ok = rms_ok = both = flips = failed = 0
+        skipped = sum("skipped" in results[n][k] for n in noisy_names)
+        total = len(noisy_names) - skipped
         times = []
         for n in noisy_names:
             r, t, noisy = results[n][k], results[n]["taubin"], results[n]["noisy"]
+            if "skipped" in r:
+                continue
             if "error" in r:
                 failed += 1
                 continue
@@ -387,9 +415,9 @@ def summary_table(results, names, method_keys):
             rms_ok += r["RMS"] <= noisy["RMS"]
             both += r["E_a"] <= noisy["E_a"] and r["RMS"] <= noisy["RMS"]
             flips += r["flipped"] > 0
-        lines.append("| %s | %s | %d/%d | %d/%d | %d/%d | %d/%d | %d | %.2f |" % (
+        lines.append("| %s | %s | %d/%d | %d/%d | %d/%d | %d/%d | %d | %d | %.2f |" % (
             SHORT[k], "-" if k == "taubin" else "%d/%d" % (beats, total), ea_ok, total, rms_ok, total, both, total,
-            flips, total, failed, np.mean(times) if times else float("nan")))
+            flips, total, failed, skipped, np.mean(times) if times else float("nan")))
     return "\n".join(lines)
 
 
@@ -404,6 +432,8 @@ def detail_table(results, names, method_keys, labels):
             if "error" in r:
                 lines.append("| %s | %s | failed: %s | | | | |" % (label_case(row["meta"]), label,
                                                                  r["error"].replace("|", "/")))
+            elif "skipped" in r:
+                lines.append("| %s | %s | skipped: %s | | | | |" % (label_case(row["meta"]), label, r["skipped"]))
             elif k == "noisy":
                 if row["meta"]["level"]:
                     lines.append("| %s | noisy input | %.3f | | %.1f | %d | |" % (
@@ -513,7 +543,8 @@ def main():
     with open(elapsed_path, "w") as f:
         f.write("%.2f %d\n" % (minutes, passes))
     cmd = "scripts/evaluate_quality.sh" + (" --quick" if args.quick else "") + (
-        " --jobs %d" % args.jobs if args.jobs > 1 else "")
+        " --jobs %d" % args.jobs if args.jobs > 1 else "") + (" --resume" if args.resume else "") + (
+        " --rerun %s" % args.rerun if args.rerun else "")
     out = ["Generated by `%s` (%s; %.0f minutes%s on a shared 2-core machine%s, so times are indicative)."
            % (cmd, time.strftime("%Y-%m-%d", time.gmtime()), minutes,
               " over %d passes (--resume)" % passes if passes > 1 else "",
@@ -572,6 +603,14 @@ def main():
            [corpus.clean("fandisk")["path"], "fandisk_nor20_noisy.ply", "fandisk_nor20_denoise.ply",
             "fandisk_nor20_guided.ply", "fandisk_nor20_bilateral.ply", "fandisk_nor20_twostep.ply"],
            ["clean", "noisy (20% normal)", "HHT denoise", "guided", "bilateral", "TwoStep"], 210, -45)
+    # The paper's Figs. 9 and 10: cube at 10% and Fandisk at 5% Gaussian noise, against the surface
+    # EMD (3D-EMD), the feature-centric EMD and non-local means.
+    for mesh, case, title in (("cube-meshed", "cube-meshed_iso10", "10% iso"), ("fandisk", "fandisk_iso5", "5% iso")):
+        render(work, "quality_%s.png" % case.replace("-meshed", ""),
+               [corpus.clean(mesh)["path"]] + ["%s_%s.ply" % (case, k) for k in
+                                               ("noisy", "denoise", "surface_emd", "fc_emd", "nlm")],
+               ["clean", "noisy (%s)" % title, "HHT denoise", "3D-EMD (residue 3)", "feature-centric EMD",
+                "non-local means"], 210, -45)
     render(work, "quality_bull_clean.png",
            [corpus.clean("bull")["path"], "bull_clean_smooth.ply", "bull_clean_enhance.ply", "bull_clean_taubin.ply"],
            ["clean", "smooth.mlx", "enhance.mlx", "Taubin"])
