@@ -21,7 +21,8 @@
 // whole decomposition and copied to the second envelope's factor, and each envelope costs one
 // numeric factorisation and one solve. The two
 // envelopes of a sift are solved on two threads (threads >= 2), as the 1D EMD fits its two
-// splines (emd.h). Tried and dropped: conjugate gradients preconditioned with the previous
+// splines (emd.h); meanwhile OpenBLAS, if it is the BLAS, is held to one thread per call (its
+// own threads inside both factorisations would oversubscribe the cores). Tried and dropped: conjugate gradients preconditioned with the previous
 // sift's factor (the systems differ by a term of rank <= 2 x the changed extrema): on Fandisk it
 // needed about as many steps as extrema changed (185-2300 for 300-1000 changes), 5-20 times the
 // cost of a new factorisation.

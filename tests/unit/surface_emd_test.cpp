@@ -3,6 +3,7 @@
 #include "mesh/cotangent_laplacian.h"
 #include "test_meshes.h"
 
+#include <dlfcn.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -216,6 +217,25 @@ TEST(SurfaceEmd, VerticesOfNoFaceKeepTheirValue) {
   ASSERT_GE(r.imfs.size(), 1u);
   EXPECT_EQ(r.residue[n], 7.0);
   EXPECT_GT(correlation(r.imfs[0].head(n), s.head(n)), 0.95);
+}
+
+TEST(SurfaceEmd, LeavesOpenBlasThreadCountAsItFoundIt) {
+  // The two envelopes run on two threads with OpenBLAS held to one thread meanwhile; the rest of
+  // the process (MeshLab, the reconstruction's factorisation) must get its BLAS threads back.
+  auto set = reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads"));
+  auto get = reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "openblas_get_num_threads"));
+  if (set == nullptr || get == nullptr) GTEST_SKIP() << "the BLAS is not OpenBLAS";
+  const int before = get();
+  set(2);
+  const auto sphere = hht::test::sphere(4);
+  SurfaceEmdResult r;
+  std::string error;
+  const bool ok = hht::surface_emd(sphere.positions, sphere.faces, harmonic(sphere.positions, 10), {}, r, error);
+  const int after = get();
+  set(before);
+  ASSERT_TRUE(ok) << error;
+  EXPECT_GE(r.report.factorizations, 2);
+  EXPECT_EQ(after, 2);
 }
 
 TEST(SurfaceEmd, RefusesBadInput) {
