@@ -104,12 +104,18 @@ def methods():
          resource_filter("surface_emd_smooth", maxImfs=3)),
         ("fc_emd", "HHT: Feature-Centric Surface EMD, residue 3 (feature_centric_emd.mlx, maxImfs 3)",
          resource_filter("feature_centric_emd", maxImfs=3)),
+        # The paper's own denoising (sec. 4.3), what its Figs. 8-10 compare: denoise.mlx with the
+        # paper's stage on and what this project added (untangling, refinement) off.
+        ("paper", "HHT: the paper's feature-preserving denoising alone (denoise.mlx: paperStage on, "
+                  "untangle off, refineNormalPasses 0)",
+         resource_filter("denoise", paperStage="true", untangle="false", refineNormalPasses=0)),
     ]
 
 
 SHORT = {"smooth": "smooth", "denoise": "denoise", "guided": "guided", "spectral": "spectral (menu)",
          "bilateral": "bilateral", "taubin": "Taubin", "hc": "HC", "laplacian": "Laplacian",
          "twostep": "TwoStep", "nlm": "NLM", "surface_emd": "3D-EMD", "fc_emd": "FC-EMD",
+         "paper": "paper's HHT denoise",
          "enhance": "enhance.mlx"}
 
 
@@ -608,9 +614,9 @@ def main():
     for mesh, case, title in (("cube-meshed", "cube-meshed_iso10", "10% iso"), ("fandisk", "fandisk_iso5", "5% iso")):
         render(work, "quality_%s.png" % case.replace("-meshed", ""),
                [corpus.clean(mesh)["path"]] + ["%s_%s.ply" % (case, k) for k in
-                                               ("noisy", "denoise", "surface_emd", "fc_emd", "nlm")],
-               ["clean", "noisy (%s)" % title, "HHT denoise", "3D-EMD (residue 3)", "feature-centric EMD",
-                "non-local means"], 210, -45)
+                                               ("noisy", "denoise", "paper", "surface_emd", "fc_emd", "nlm")],
+               ["clean", "noisy (%s)" % title, "HHT denoise", "paper's HHT denoise", "3D-EMD (residue 3)",
+                "feature-centric EMD", "non-local means"], 210, -45)
     render(work, "quality_bull_clean.png",
            [corpus.clean("bull")["path"], "bull_clean_smooth.ply", "bull_clean_enhance.ply", "bull_clean_taubin.ply"],
            ["clean", "smooth.mlx", "enhance.mlx", "Taubin"])
