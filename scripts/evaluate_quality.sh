@@ -4,7 +4,8 @@
 # meshlabserver (build/stage, made by scripts/build.sh), metrics against the clean mesh.
 # Writes the tables into docs/quality.md (between the quality-table markers) and pictures into
 # docs/images/quality_*.png; --quick runs a small subset and writes only build/quality/.
-#   scripts/evaluate_quality.sh [--quick] [--resume] [--work DIR] [--cad-models isotropic,normal,random]
+#   scripts/evaluate_quality.sh [--quick] [--jobs N] [--resume [--rerun METHOD,...]] [--work DIR]
+#                               [--cad-models isotropic,normal,random]
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 SUDO=""; [ "$(id -u)" -eq 0 ] || SUDO="sudo"
