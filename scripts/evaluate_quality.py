@@ -559,6 +559,8 @@ def main():
            "with the count of flipped faces when there are any; the best E_a and the best RMS of each row in "
            "bold. Noise sigma in mean edge lengths, fixed seeds. Methods:", ""]
     out += ["- **%s**: %s" % (SHORT[k], labels[k]) for k in keys]
+    out += ["", "%s: skipped on meshes above %d vertices (\"skipped\" in the cells)." % (
+        " and ".join(SHORT[k] for k in VERTEX_LIMITS), SURFACE_EMD_VERTEX_LIMIT)]
     out += ["", "### The meshes", "",
             "| mesh | class | vertices | faces | mean edge / diag | folded faces in the clean mesh |",
             "|---|---|---|---|---|---|"]
