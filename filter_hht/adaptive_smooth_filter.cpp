@@ -18,7 +18,7 @@ void declare(const MeshDocument&, RichParameterList& p) {
   p.addParam(RichFloat("noisePercent", 0.0f, "Noise level (% of mean edge, 0 = estimate)",
                        "Standard deviation of the noise per coordinate in percent of the mean edge length. 0 "
                        "estimates it from the finest IMF of the one-ring height signal along a Hamiltonian cycle; "
-                       "give a value only when you know it."));
+                       "give a value only when you know it (0 to 1000)."));
   declare_cycle_and_emd_parameters(p);
 }
 
@@ -33,22 +33,16 @@ bool apply(FilterRun& run) {
   options.noise = par.getFloat("noisePercent") / 100.0;
   options.cycle = cycle_options(par);
   options.emd = emd_options(par);
-  if (!(options.strength >= 0.1 && options.strength <= 10)) {
-    run.error = "Nothing was changed: the strength must lie in [0.1, 10].";
+  if (!check_range("the strength", options.strength, 0.1, 10, run.error) ||
+      !check_range("the noise level (% of the mean edge)", 100 * options.noise, 0, 1000, run.error) ||
+      !check_emd_parameters(par, run.error))
     return false;
-  }
-  if (!(options.noise >= 0 && options.noise <= 10)) {
-    run.error = "Nothing was changed: the noise level must lie in [0, 1000] percent of the mean edge.";
-    return false;
-  }
   hht::NoiseAdaptiveSmoothingReport report;
-  std::string message;
   auto progress = [&](int percent, const char* stage) { run.report(percent, stage); };
-  if (!hht::noise_adaptive_smooth(positions, faces, options, result, report, message, progress)) {
-    run.error = nothing_changed(message);
+  if (!move_vertices_checked(model, positions, result, [&](hht::Positions& out, std::string& message) {
+        return hht::noise_adaptive_smooth(positions, faces, options, out, report, message, progress);
+      }, run.error))
     return false;
-  }
-  move_vertices(model, result);
   const double edge = hht::mean_edge_length(positions, faces);
   if (options.noise > 0)
     run.log(QString("Adaptive smooth: noise given, sigma %1% of the mean edge length %2").arg(100 * options.noise).arg(edge));

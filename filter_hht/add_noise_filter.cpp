@@ -11,7 +11,7 @@ namespace {
 void declare(const MeshDocument&, RichParameterList& p) {
   p.addParam(RichFloat("sigmaPercent", 10.0f, "Sigma (% of mean edge length)",
                        "Standard deviation of the displacement, in percent of the mesh's mean edge length (the paper "
-                       "uses 5% for Fandisk, 10% for the cube and the torus)."));
+                       "uses 5% for Fandisk, 10% for the cube and the torus; 0 to 1000)."));
   p.addParam(RichEnum("direction", 0,
                       QStringList{"Random direction", "Along the vertex normal", "Isotropic (each coordinate)"},
                       "Direction",
@@ -27,18 +27,19 @@ bool apply(FilterRun& run) {
   hht::Faces faces;
   if (!read_triangle_mesh(model.cm, positions, faces, run.error)) return false;
   const double percent = run.parameters.getFloat("sigmaPercent");
-  if (!(percent >= 0) || !std::isfinite(percent)) {
-    run.error = "Nothing was changed: sigma must be a finite percentage >= 0.";
-    return false;
-  }
+  if (!check_range("sigma", percent, 0, 1000, run.error, " percent of the mean edge length")) return false;
   const int choice = run.parameters.getEnum("direction");
   const auto direction = choice == 1   ? hht::NoiseDirection::Normal
                          : choice == 2 ? hht::NoiseDirection::Isotropic
                                        : hht::NoiseDirection::Random;
   static const char* const names[] = {"random directions", "along the normals", "isotropic, each coordinate"};
-  const hht::Positions noisy = hht::add_gaussian_noise(positions, faces, percent, direction,
-                                                       static_cast<unsigned>(run.parameters.getInt("seed")));
-  move_vertices(model, noisy);
+  hht::Positions noisy;
+  if (!move_vertices_checked(model, positions, noisy, [&](hht::Positions& out, std::string&) {
+        out = hht::add_gaussian_noise(positions, faces, percent, direction,
+                                      static_cast<unsigned>(run.parameters.getInt("seed")));
+        return true;
+      }, run.error))
+    return false;
   const double edge = hht::mean_edge_length(positions, faces);
   const double rms = std::sqrt((noisy - positions).rowwise().squaredNorm().mean());
   run.log(QString("Gaussian noise: sigma %1% of the mean edge length %2 = %3, %4; measured RMS displacement %5")

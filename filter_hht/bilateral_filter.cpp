@@ -11,29 +11,34 @@ namespace {
 void declare(const MeshDocument&, RichParameterList& p) {
   const hht::BilateralOptions d;
   p.addParam(RichFloat("sigmaC", float(d.sigma_c), "sigma_c (x mean edge length)",
-                       "Closeness width, in mean edge lengths; neighbours within 2 sigma_c take part (paper: 0.4)."));
+                       "Closeness width, in mean edge lengths; neighbours within 2 sigma_c take part (paper: 0.4; 0.01 "
+                       "to 10, the work grows with its square)."));
   p.addParam(RichFloat("sigmaS", float(d.sigma_s), "sigma_s (x mean edge length)",
                        "Width on the neighbours' offsets along the normal, in mean edge lengths: smaller keeps more "
-                       "features (paper: 0.15 for the torus, 0.05 for Fandisk)."));
-  p.addParam(RichInt("passes", d.passes, "Passes", "Iterations, normals recomputed each time (paper: 5 torus, 3 Fandisk)."));
+                       "features (paper: 0.15 for the torus, 0.05 for Fandisk; 0.0001 to 100)."));
+  p.addParam(RichInt("passes", d.passes, "Passes", "Iterations, normals recomputed each time (paper: 5 torus, 3 Fandisk; 0 to 1000)."));
 }
 
 bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
-  hht::Positions positions;
+  hht::Positions positions, result;
   hht::Faces faces;
   if (!read_triangle_mesh(model.cm, positions, faces, run.error)) return false;
   hht::BilateralOptions o;
   o.sigma_c = run.parameters.getFloat("sigmaC");
   o.sigma_s = run.parameters.getFloat("sigmaS");
   o.passes = run.parameters.getInt("passes");
-  if (!(o.sigma_c > 0) || !(o.sigma_s > 0) || o.passes < 0) {
-    run.error = "Nothing was changed: sigma_c and sigma_s must be positive and passes at least 0.";
+  if (!check_range("sigma_c", o.sigma_c, 0.01, 10, run.error, " mean edge lengths (the work grows with its square)") ||
+      !check_range("sigma_s", o.sigma_s, 1e-4, 100, run.error, " mean edge lengths") ||
+      !check_range("passes", o.passes, 0, 1000, run.error))
     return false;
-  }
   Stopwatch clock;
   run.report(10, "Bilateral denoising");
-  move_vertices(model, hht::bilateral_denoise(positions, faces, o));
+  if (!move_vertices_checked(model, positions, result, [&](hht::Positions& out, std::string&) {
+        out = hht::bilateral_denoise(positions, faces, o);
+        return true;
+      }, run.error))
+    return false;
   run.log(QString("Bilateral mesh denoising: sigma_c %1, sigma_s %2 (x mean edge length), %3 passes; %4 s")
               .arg(o.sigma_c).arg(o.sigma_s).arg(o.passes).arg(clock.seconds(), 0, 'f', 3));
   return true;

@@ -45,7 +45,8 @@ bool apply(FilterRun& run) {
   const bool by_distance = run.parameters.getEnum("perVertex") == 0;
   const Eigen::VectorXd per_vertex = by_distance ? hht::vertex_distance_to_reference(result, truth, faces)
                                                  : hht::vertex_normal_error_degrees(result, truth, faces);
-  show_as_quality(model, per_vertex, 0.0);
+  std::pair<double, double> range;
+  if (!show_as_quality(model, per_vertex, 0.0, range, run.error)) return false;
   run.log(QString("Compared '%1' with the reference '%2' (%3 vertices, %4 faces):")
               .arg(model.label()).arg(reference->label()).arg(result.rows()).arg(faces.rows()));
   run.log(QString("  E_a = %1 degrees (mean over faces of the angle between result and reference face normals)").arg(ea, 0, 'f', 4));

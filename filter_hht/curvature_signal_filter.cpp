@@ -11,7 +11,7 @@ namespace {
 void declare(const MeshDocument&, RichParameterList& p) {
   p.addParam(RichFloat("rampPercentile", 2.0f, "Colour ramp clipping (%)",
                        "The colour ramp spans the values between this percentile and its complement "
-                       "(2 -> 2nd to 98th percentile), so a few extreme vertices do not flatten it."));
+                       "(2 -> 2nd to 98th percentile; 0 to 50), so a few extreme vertices do not flatten it."));
 }
 
 bool apply(FilterRun& run) {
@@ -19,7 +19,9 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions;
   hht::Faces faces;
-  if (!read_triangle_mesh(model.cm, positions, faces, run.error)) return false;
+  if (!read_triangle_mesh(model.cm, positions, faces, run.error) ||
+      !check_range("the colour ramp clipping", run.parameters.getFloat("rampPercentile"), 0, 50, run.error, " percent"))
+    return false;
 
   run.report(10, "Cotangent Laplacian and mixed Voronoi areas");
   hht::MeanCurvature curvature;
@@ -29,7 +31,9 @@ bool apply(FilterRun& run) {
     return false;
   }
   run.report(90, "Writing the signal into vertex quality");
-  const auto range = show_as_quality(model, curvature.signal, run.parameters.getFloat("rampPercentile"));
+  std::pair<double, double> range;
+  if (!show_as_quality(model, curvature.signal, run.parameters.getFloat("rampPercentile"), range, run.error))
+    return false;
   const Eigen::VectorXd& g = curvature.signal;
   run.log(QString("Curvature signal G = <L V, n> = 2H on %1 vertices: min %2, max %3, mean %4; "
                   "colour ramp over [%5, %6]; %7 s")

@@ -16,53 +16,63 @@ namespace {
 
 enum Show { ShowNothing, SelectFeatureVertices, FeatureLineLayer };
 
+// Caps on the work the parameters ask for: passes and iterations are linear in the mesh each.
+constexpr int kMaxPasses = 1000, kMaxCycles = 100;
+
+// The dialog: what a user tunes first (noise, untangling, refinement, features), then the
+// paper's optional stage and its parameters, then the experts' cycle and EMD rules.
 void declare(const MeshDocument&, RichParameterList& p) {
   const hht::DenoiseOptions d;
-  p.addParam(RichFloat("noisePercent", 0.0f, "Noise level (% of mean edge, 0 = estimate)",
-                       "Standard deviation of the noise in percent of the mean edge length. 0 estimates it from the "
-                       "finest IMF of the one-ring height signal along a Hamiltonian cycle; it sets the number of "
-                       "refinement rounds and the untangling smoothing."));
+  p.addParam(RichFloat("noisePercent", float(100 * d.noise), "Noise level (% of mean edge, 0 = estimate)",
+                       "Standard deviation of the noise in percent of the mean edge length (0 to 1000). 0 estimates "
+                       "it from the finest IMF of the one-ring height signal along a Hamiltonian cycle; it sets the "
+                       "number of refinement rounds and the untangling smoothing."));
   p.addParam(RichBool("untangle", d.untangle, "Untangle folded triangles first",
                       "Noise with a tangential part (a scanner's) folds small triangles over, which no normal filter "
                       "repairs. When more than 0.75% of the faces point away from those of the noise-adaptive "
                       "smoothing (HHT: Adaptive Smooth), the denoiser starts from that smoothing."));
-  p.addParam(RichBool("paperStage", d.paper_stage, "Paper's HHT stage",
-                      "Run the paper's divide-and-conquer HHT (sec. 4.3: feature lines as their own signals, the "
-                      "cycle's curvature signal low-passed, Laplacian reconstruction) before the refinement. Off by "
-                      "default: measured, the refinement alone is better on most cases (docs/quality.md)."));
-  p.addParam(RichBool("detectFeatures", true, "Preserve sharp features",
+  p.addParam(RichInt("refineRounds", d.refine_rounds, "Refinement rounds (0 = by the noise)",
+                     "Rounds of guided normal filtering and vertex update (0 to 100); 0 takes one per 10% of noise "
+                     "(below 5%, one round of proportionally fewer passes, so a clean mesh is barely touched)."));
+  p.addParam(RichInt("refineNormalPasses", d.refine_normal_passes, "Refinement: normal filtering passes",
+                     "Guided normal filtering passes (which keep creases) per round before the vertices are fitted to "
+                     "the normals (0 to 1000). 0: no refinement (with the paper's stage on, the paper's method "
+                     "alone)."));
+  p.addParam(RichInt("refineVertexIterations", d.refine_vertex_iterations, "Refinement: vertex update iterations",
+                     "Iterations of the vertex update towards the filtered normals (Sun et al. 2007; 0 to 1000)."));
+  p.addParam(RichBool("detectFeatures", d.detect_features, "Preserve sharp features",
                       "Detect sharp features and process them as their own signals (CAD-like models). Off: no feature "
                       "separation, for smooth models such as the paper's torus."));
   p.addParam(RichFloat("featureAngle", float(d.features.angle_degrees), "Feature angle (deg)",
                        "A crease is a feature when the (noise-filtered) normals of its two faces differ by more than "
-                       "this angle: 90 on a cube edge, 0 on a plane. Lower it to catch weak creases."));
+                       "this angle (0 to 180): 90 on a cube edge, 0 on a plane. Lower it to catch weak creases."));
   p.addParam(RichInt("normalFilterIterations", d.features.filter_iterations, "Normal filtering passes",
                      "Passes of guided normal filtering before the feature detection votes, so that noise does not "
-                     "look like creases. 0 for noise-free input."));
-  p.addParam(RichFloat("cutoff", float(d.cutoff), "Cut-off frequency",
-                       "Instantaneous frequencies above this (cycles per sample) are removed from the curvature "
-                       "signals, along the cycle and along each feature line."));
-  p.addParam(RichInt("cycles", d.cycles, "Cycles averaged",
-                     "Hamiltonian cycles (different seeds) along which the non-feature signal is filtered; the results "
-                     "are averaged, which removes the stripes a single cycle leaves."));
-  declare_cycle_and_emd_parameters(p);
-  p.addParam(RichInt("shortLinePasses", d.short_line_passes, "Laplacian passes on short lines",
-                     "Feature lines too short for EMD are smoothed by this many passes of a 1D Laplacian instead."));
-  p.addParam(RichFloat("lambda", float(d.reconstruction.lambda), "Position weight (lambda)",
-                       "Weight of the input positions in the reconstruction, relative to the mean edge length."));
-  p.addParam(RichInt("refineRounds", d.refine_rounds, "Refinement rounds (0 = by the noise)",
-                     "Rounds of guided normal filtering and vertex update; 0 takes one per 10% of noise (below 5%, one "
-                     "round of proportionally fewer passes, so a clean mesh is barely touched)."));
-  p.addParam(RichInt("refineNormalPasses", d.refine_normal_passes, "Refinement: normal filtering passes",
-                     "Guided normal filtering passes (which keep creases) per round before the vertices are fitted to "
-                     "the normals. 0: no refinement (with the paper's stage on, the paper's method alone)."));
-  p.addParam(RichInt("refineVertexIterations", d.refine_vertex_iterations, "Refinement: vertex update iterations",
-                     "Iterations of the vertex update towards the filtered normals (Sun et al. 2007)."));
+                     "look like creases (0 to 1000). 0 for noise-free input."));
   p.addParam(RichEnum("showFeatures", ShowNothing,
                       QStringList{"Nothing", "Select the feature vertices", "Add the feature lines as a layer"},
                       "Show the detected features",
                       "Also show the detection (the paper's Fig. 4c-d): feature vertices selected, or a new layer "
                       "with the feature lines as polylines, one colour per line."));
+  p.addParam(RichBool("paperStage", d.paper_stage, "Paper's HHT stage",
+                      "Run the paper's divide-and-conquer HHT (sec. 4.3: feature lines as their own signals, the "
+                      "cycle's curvature signal low-passed, Laplacian reconstruction) before the refinement. Off by "
+                      "default: measured, the refinement alone is better on most cases (docs/quality.md). The "
+                      "parameters below act on this stage only."));
+  p.addParam(RichFloat("cutoff", float(d.cutoff), "Paper's stage: cut-off frequency",
+                       "Instantaneous frequencies above this (cycles per sample, 0 to 0.5) are removed from the "
+                       "curvature signals, along the cycle and along each feature line."));
+  p.addParam(RichInt("cycles", d.cycles, "Paper's stage: cycles averaged",
+                     QString("Hamiltonian cycles (different seeds) along which the non-feature signal is filtered "
+                             "(1 to %1); the results are averaged, which removes the stripes a single cycle leaves.")
+                         .arg(kMaxCycles)));
+  p.addParam(RichInt("shortLinePasses", d.short_line_passes, "Paper's stage: Laplacian passes on short lines",
+                     "Feature lines too short for EMD are smoothed by this many passes of a 1D Laplacian instead (0 "
+                     "to 1000)."));
+  p.addParam(RichFloat("lambda", float(d.reconstruction.lambda), "Paper's stage: position weight (lambda)",
+                       "Weight of the input positions in the reconstruction, relative to the mean edge length "
+                       "(0.0001 to 10000)."));
+  declare_cycle_and_emd_parameters(p);
 }
 
 void add_feature_layer(MeshDocument& document, const hht::Positions& positions, const hht::FeatureLines& lines,
@@ -100,33 +110,36 @@ bool apply(FilterRun& run) {
   o.untangle = par.getBool("untangle");
   o.paper_stage = par.getBool("paperStage");
   o.refine_rounds = par.getInt("refineRounds");
-  if (!(o.noise >= 0 && o.noise <= 10) || o.refine_rounds < 0 || o.refine_rounds > 100) {
-    run.error = "Nothing was changed: the noise level must lie in [0, 1000]% and the rounds in [0, 100].";
+  if (!check_range("the noise level (% of the mean edge)", 100 * o.noise, 0, 1000, run.error) ||
+      !check_range("refineRounds", o.refine_rounds, 0, 100, run.error))
     return false;
-  }
   o.detect_features = par.getBool("detectFeatures");
   o.features.angle_degrees = par.getFloat("featureAngle");
-  o.features.filter_iterations = std::max(0, par.getInt("normalFilterIterations"));
+  o.features.filter_iterations = par.getInt("normalFilterIterations");
   o.cutoff = par.getFloat("cutoff");
-  o.cycles = std::max(1, par.getInt("cycles"));
+  o.cycles = par.getInt("cycles");
   o.cycle = cycle_options(par);
   o.emd = emd_options(par);
-  o.short_line_passes = std::max(0, par.getInt("shortLinePasses"));
+  o.short_line_passes = par.getInt("shortLinePasses");
   o.reconstruction.lambda = par.getFloat("lambda");
-  o.refine_normal_passes = std::max(0, par.getInt("refineNormalPasses"));
-  o.refine_vertex_iterations = std::max(0, par.getInt("refineVertexIterations"));
-  if (!(o.cutoff >= 0 && o.cutoff <= 0.5) || !(o.reconstruction.lambda > 0)) {
-    run.error = "Nothing was changed: the cut-off must lie in [0, 0.5] and lambda must be positive.";
+  o.refine_normal_passes = par.getInt("refineNormalPasses");
+  o.refine_vertex_iterations = par.getInt("refineVertexIterations");
+  if (!check_range("the feature angle", o.features.angle_degrees, 0, 180, run.error, " degrees") ||
+      !check_range("normalFilterIterations", o.features.filter_iterations, 0, kMaxPasses, run.error) ||
+      !check_range("the cut-off", o.cutoff, 0, 0.5, run.error, " cycles per sample") ||
+      !check_range("cycles", o.cycles, 1, kMaxCycles, run.error, " (each costs one more cycle and EMD)") ||
+      !check_emd_parameters(par, run.error) ||
+      !check_range("shortLinePasses", o.short_line_passes, 0, kMaxPasses, run.error) ||
+      !check_range("lambda", o.reconstruction.lambda, 1e-4, 1e4, run.error, " mean edge lengths") ||
+      !check_range("refineNormalPasses", o.refine_normal_passes, 0, kMaxPasses, run.error) ||
+      !check_range("refineVertexIterations", o.refine_vertex_iterations, 0, kMaxPasses, run.error))
     return false;
-  }
   hht::DenoiseReport report;
-  std::string message;
   auto progress = [&](int percent, const char* stage) { run.report(percent, stage); };
-  if (!hht::feature_preserving_denoise(positions, faces, o, result, report, message, progress)) {
-    run.error = nothing_changed(message);
+  if (!move_vertices_checked(model, positions, result, [&](hht::Positions& out, std::string& message) {
+        return hht::feature_preserving_denoise(positions, faces, o, out, report, message, progress);
+      }, run.error))
     return false;
-  }
-  move_vertices(model, result);
   const int show = par.getEnum("showFeatures");
   if (show == SelectFeatureVertices) {
     size_t i = 0;

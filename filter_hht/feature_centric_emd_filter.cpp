@@ -1,6 +1,7 @@
 // "HHT: Feature-Centric Surface EMD" (after Hu, Wang & Qin 2014): the surface EMD with the sharp
 // feature vertices kept out of the envelope fitting; the mesh rebuilt from the k-th residue.
 #include "filter_spec.h"
+#include "hht_parameters.h"
 #include "mesh_adapter.h"
 #include "surface_emd_parameters.h"
 
@@ -12,9 +13,10 @@ void declare(const MeshDocument&, RichParameterList& p) {
   const hht::SharpFeatureOptions d;
   declare_surface_emd_parameters(p);
   p.addParam(RichFloat("featureAngle", float(d.angle_degrees), "Feature angle (deg)",
-                       "An edge is a crease when the filtered normals of its faces differ by more than this."));
+                       "An edge is a crease when the filtered normals of its faces differ by more than this (0 to 180)."));
   p.addParam(RichInt("normalFilterIterations", d.filter_iterations, "Normal filtering passes",
-                     "Guided normal filtering passes before detection; 0 for noise-free meshes."));
+                     "Guided normal filtering passes before detection; 0 for noise-free meshes (0 to 1000)."));
+  declare_emd_parameters(p);
 }
 
 bool apply(FilterRun& run) {
@@ -27,15 +29,16 @@ bool apply(FilterRun& run) {
   options.feature_centric = true;
   options.features.angle_degrees = run.parameters.getFloat("featureAngle");
   options.features.filter_iterations = run.parameters.getInt("normalFilterIterations");
+  if (!check_range("the feature angle", options.features.angle_degrees, 0, 180, run.error, " degrees") ||
+      !check_range("normalFilterIterations", options.features.filter_iterations, 0, 1000, run.error))
+    return false;
   run.report(5, "Features, surface EMD and reconstruction");
   hht::Positions result;
   hht::SurfaceEmdSmoothingReport report;
-  std::string message;
-  if (!hht::surface_emd_smoothing(positions, faces, options, result, report, message)) {
-    run.error = nothing_changed(message);
+  if (!move_vertices_checked(model, positions, result, [&](hht::Positions& out, std::string& message) {
+        return hht::surface_emd_smoothing(positions, faces, options, out, report, message);
+      }, run.error))
     return false;
-  }
-  move_vertices(model, result);
   run.log(QString("Feature-centric surface EMD: %1 feature vertices kept out of the envelopes; %2 IMFs, rebuilt from "
                   "residue %3; %4 factorisations; largest vertex move %5")
               .arg(report.feature_vertices).arg(report.imfs).arg(report.residue_used).arg(report.emd.factorizations)

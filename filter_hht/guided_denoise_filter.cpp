@@ -40,12 +40,10 @@ bool apply(FilterRun& run) {
   }
   Stopwatch clock;
   run.report(10, "Guided normal filtering and vertex update");
-  std::string message;
-  if (!hht::guided_normal_denoise(positions, faces, o, result, message)) {
-    run.error = nothing_changed(message);
+  if (!move_vertices_checked(model, positions, result, [&](hht::Positions& out, std::string& message) {
+        return hht::guided_normal_denoise(positions, faces, o, out, message);
+      }, run.error))
     return false;
-  }
-  move_vertices(model, result);
   run.log(QString("Guided normal filtering denoise: %1 round(s) of %2 passes (sigma_r %3) and %4 vertex iterations; "
                   "%5 s")
               .arg(o.rounds).arg(o.normal_passes).arg(o.sigma).arg(o.vertex_iterations).arg(clock.seconds(), 0, 'f', 3));

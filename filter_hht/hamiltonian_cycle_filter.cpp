@@ -11,13 +11,15 @@ namespace hht_plugin {
 
 namespace {
 
+constexpr int kMaxTries = 100;
+
 void declare(const MeshDocument&, RichParameterList& p) {
   p.addParam(RichInt("seed", 0, "Seed",
                      "Where the ring starts growing: 0 takes each component's first face, any other "
                      "value a random face drawn from this seed. Different seeds give different cycles."));
   p.addParam(RichInt("tries", 1, "Seeds to try",
                      "Grow the ring from this many seeds per component and keep the cycle that leaves the "
-                     "fewest isolated vertices. Each try costs one more linear pass."));
+                     "fewest isolated vertices (1 to 100). Each try costs one more linear pass."));
   p.addParam(RichBool("repair", true, "Attach isolated vertices",
                       "Attach vertices the ring missed by a local move (drop an ear of the region, take two "
                       "triangles). Vertices still missed are logged and get quality -1."));
@@ -57,7 +59,9 @@ bool apply(FilterRun& run) {
   run.report(10, "Growing the ring");
   hht::CycleOptions options;
   options.seed = run.parameters.getInt("seed");
-  options.tries = std::max(1, run.parameters.getInt("tries"));
+  options.tries = run.parameters.getInt("tries");
+  if (!check_range("tries", options.tries, 1, kMaxTries, run.error, " (each try is one more pass over the mesh)"))
+    return false;
   options.repair = run.parameters.getBool("repair");
   hht::HamiltonianCycle cycle;
   std::string message;

@@ -13,6 +13,7 @@ namespace hht_plugin {
 namespace {
 
 enum Source { CurvatureSignal, CurrentQuality };
+constexpr int kMaxBins = 10000;
 const hht::CycleQuantity kOutputs[] = {hht::CycleQuantity::Imf, hht::CycleQuantity::Amplitude,
                                        hht::CycleQuantity::Frequency, hht::CycleQuantity::Phase,
                                        hht::CycleQuantity::Residue};
@@ -29,15 +30,15 @@ void declare(const MeshDocument&, RichParameterList& p) {
                       "What goes into vertex quality: IMF k itself, its instantaneous amplitude, frequency (cycles "
                       "per sample along the cycle) or phase (radians), or the residue."));
   p.addParam(RichInt("imf", 1, "IMF number (1 = finest)",
-                     "Which IMF the output refers to; 1 is the finest (highest frequency). Vertices of a component "
-                     "with fewer IMFs get 0."));
-  declare_cycle_and_emd_parameters(p);
+                     "Which IMF the output refers to; 1 is the finest (highest frequency). Refused when the "
+                     "decomposition has fewer IMFs; vertices of a component with fewer IMFs get 0."));
   p.addParam(RichFloat("rampPercentile", 2.0f, "Colour ramp clipping (%)",
-                       "The colour ramp spans this percentile to its complement of the written values."));
+                       "The colour ramp spans this percentile to its complement of the written values (0 to 50)."));
   p.addParam(RichSaveFile("histogramFile", "", "*.png", "Save frequency distribution to",
                           "If set, saves the amplitude-weighted distribution of instantaneous frequency of each IMF "
                           "(the paper's Fig. 3) as a PNG plot and a CSV table beside it (same name, .csv)."));
-  p.addParam(RichInt("bins", 50, "Histogram bins", "Number of frequency bins over [0, 0.5] cycles per sample."));
+  p.addParam(RichInt("bins", 50, "Histogram bins", QString("Number of frequency bins over [0, 0.5] cycles per sample (1 to %1).").arg(kMaxBins)));
+  declare_cycle_and_emd_parameters(p);
 }
 
 bool apply(FilterRun& run) {
@@ -53,6 +54,10 @@ bool apply(FilterRun& run) {
     run.error = "Nothing was changed: the IMF number starts at 1 (the finest IMF).";
     return false;
   }
+  if (!check_emd_parameters(par, run.error) ||
+      !check_range("the colour ramp clipping", par.getFloat("rampPercentile"), 0, 50, run.error, " percent") ||
+      !check_range("the histogram bins", par.getInt("bins"), 1, kMaxBins, run.error))
+    return false;
 
   std::string message;
   Eigen::VectorXd signal;
@@ -91,6 +96,11 @@ bool apply(FilterRun& run) {
     return false;
   }
   const double emd_seconds = clock.lap();
+  if (kOutputs[output] != hht::CycleQuantity::Residue && imf >= decomposition.imf_count()) {
+    run.error = QString("Nothing was changed: the decomposition has %1 IMFs, IMF %2 was asked for.")
+                    .arg(decomposition.imf_count()).arg(imf + 1);
+    return false;
+  }
   run.report(60, "Hilbert spectra");
   hht::compute_spectra(decomposition);
   const double spectra_seconds = clock.lap();
@@ -99,7 +109,7 @@ bool apply(FilterRun& run) {
   const QString histogram_file = par.getSaveFileName("histogramFile");
   if (!histogram_file.isEmpty()) {
     run.report(80, "Saving the frequency distribution");
-    if (!save_frequency_distribution(hht::frequency_distribution(decomposition, std::max(1, par.getInt("bins"))),
+    if (!save_frequency_distribution(hht::frequency_distribution(decomposition, par.getInt("bins")),
                                      histogram_file, saved, run.error)) {
       run.error = "Nothing was changed: " + run.error + ".";
       return false;
@@ -108,7 +118,8 @@ bool apply(FilterRun& run) {
 
   run.report(90, "Writing the result into vertex quality");
   const Eigen::VectorXd values = hht::quantity_on_vertices(cycle, decomposition, kOutputs[output], imf, faces);
-  const auto range = show_as_quality(model, values, par.getFloat("rampPercentile"));
+  std::pair<double, double> range;
+  if (!show_as_quality(model, values, par.getFloat("rampPercentile"), range, run.error)) return false;
 
   run.log(QString("Hilbert spectra of the %1 along the Hamiltonian cycle (%2 vertices, %3 on the cycle, %4 segment(s))")
               .arg(par.getEnum("source") == CurrentQuality ? "vertex quality" : "curvature signal G = 2H")

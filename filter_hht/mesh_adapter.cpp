@@ -5,6 +5,8 @@
 
 #include <vcg/complex/algorithms/update/color.h>
 
+#include <limits>
+
 namespace hht_plugin {
 
 bool read_triangle_mesh(const CMeshO& m, hht::Positions& positions, hht::Faces& faces, QString& error) {
@@ -21,18 +23,40 @@ QString nothing_changed(const std::string& why) {
   return QString::fromStdString("Nothing was changed: " + why + ".");
 }
 
-void move_vertices(MeshModel& model, const hht::Positions& positions) {
-  hht::set_vertex_positions(model.cm, positions);
+bool move_vertices_checked(MeshModel& model, const hht::Positions& positions, hht::Positions& result,
+                           const PositionsWork& work, QString& error) {
+  std::string message;
+  if (!work(result, message) || !hht::check_result_positions(positions, result, message)) {
+    error = nothing_changed(message);
+    return false;
+  }
+  hht::set_vertex_positions(model.cm, result);
   update_box_and_normals(model);
+  return true;
 }
 
-std::pair<double, double> show_as_quality(MeshModel& model, const Eigen::VectorXd& values, double percent) {
+bool check_range(const QString& what, double value, double low, double high, QString& error, const QString& why) {
+  if (value >= low && value <= high) return true;
+  error = QString("Nothing was changed: %1 must lie in [%2, %3]%4, not %5.").arg(what).arg(low).arg(high).arg(why).arg(value);
+  return false;
+}
+
+bool show_as_quality(MeshModel& model, const Eigen::VectorXd& values, double percent,
+                     std::pair<double, double>& range, QString& error) {
+  const double largest = std::numeric_limits<float>::max();
+  Eigen::Index bad = 0;
+  for (double value : values) bad += std::abs(value) <= largest ? 0 : 1;  // NaN counts too
+  if (bad > 0) {
+    error = nothing_changed("the result has " + std::to_string(bad) +
+                            " vertices with a value that is NaN, infinite or beyond single precision");
+    return false;
+  }
   model.updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR);
   hht::set_vertex_quality(model.cm, values);
-  const auto range = hht::percentile_range(values, percent);
+  range = hht::percentile_range(values, percent);
   vcg::tri::UpdateColor<CMeshO>::PerVertexQualityRamp(model.cm, static_cast<float>(range.first),
                                                       static_cast<float>(range.second));
-  return range;
+  return true;
 }
 
 QString stage_times_line(const std::vector<hht::StageTime>& stages) {

@@ -11,6 +11,8 @@
 #include <Eigen/Core>
 
 #include <chrono>
+#include <functional>
+#include <string>
 
 namespace hht_plugin {
 
@@ -20,12 +22,27 @@ bool read_triangle_mesh(const CMeshO& m, hht::Positions& positions, hht::Faces& 
 // The error of a filter that stopped before touching the mesh: "Nothing was changed: <why>.".
 QString nothing_changed(const std::string& why);
 
-// New positions (one per live vertex) into the mesh, with its bounding box and normals updated.
-void move_vertices(MeshModel& model, const hht::Positions& positions);
+// A library filter run on the mesh's arrays: fills `result` (one row per vertex) or returns
+// false with the reason.
+using PositionsWork = std::function<bool(hht::Positions& result, std::string& error)>;
+
+// The one exit of every filter that moves vertices: runs `work`, refuses a result that is not
+// finite or moved a vertex farther than hht::kMaxMoveDiagonals bounding-box diagonals
+// (hht::check_result_positions), and only then writes it into the mesh, box and normals
+// updated. On false the mesh is exactly as it was and `error` is "Nothing was changed: ...".
+bool move_vertices_checked(MeshModel& model, const hht::Positions& positions, hht::Positions& result,
+                           const PositionsWork& work, QString& error);
+
+// Refuses a parameter outside [low, high] (NaN included) with a message naming it and the range
+// ("Nothing was changed: <what> must lie in [low, high]<why>, not <value>.").
+bool check_range(const QString& what, double value, double low, double high, QString& error,
+                 const QString& why = QString());
 
 // Writes `values` (one per live vertex) into vertex quality and colours the mesh by a ramp
-// over their [percent, 100 - percent] percentile range, returned.
-std::pair<double, double> show_as_quality(MeshModel& model, const Eigen::VectorXd& values, double percent);
+// over their [percent, 100 - percent] percentile range, returned in `range`. Refuses values
+// that are not finite in single precision (MeshLab's quality), leaving the mesh as it was.
+bool show_as_quality(MeshModel& model, const Eigen::VectorXd& values, double percent,
+                     std::pair<double, double>& range, QString& error);
 
 // "  times (s): cycle 0.012, emd 0.003, ..., total 0.085"
 QString stage_times_line(const std::vector<hht::StageTime>& stages);

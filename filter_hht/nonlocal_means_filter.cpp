@@ -12,18 +12,18 @@ void declare(const MeshDocument&, RichParameterList& p) {
   const hht::NonLocalMeansOptions d;
   p.addParam(RichFloat("eta1", float(d.eta1), "eta1: search radius (x mean edge length)",
                        "Neighbours within this distance take part; the spatial Gaussian falls to e^-2 there "
-                       "(paper's torus: 3)."));
+                       "(paper's torus: 3; 0.01 to 10, the work grows with its square)."));
   p.addParam(RichFloat("eta2", float(d.eta2), "eta2: similarity width (x mean edge length)",
                        "Width of the weight on the difference of the two vertices' neighbourhoods (paper's torus: "
-                       "1.3)."));
+                       "1.3; 0.0001 to 100)."));
   p.addParam(RichFloat("eta3", float(d.eta3), "eta3: stencil spacing (x mean edge length)",
-                       "Ring spacing of the neighbourhood compared (paper's torus: 1.0)."));
-  p.addParam(RichInt("iterations", d.iterations, "Iterations", "Passes, normals recomputed each time."));
+                       "Ring spacing of the neighbourhood compared (paper's torus: 1.0; 0.01 to 10)."));
+  p.addParam(RichInt("iterations", d.iterations, "Iterations", "Passes, normals recomputed each time (0 to 1000)."));
 }
 
 bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
-  hht::Positions positions;
+  hht::Positions positions, result;
   hht::Faces faces;
   if (!read_triangle_mesh(model.cm, positions, faces, run.error)) return false;
   hht::NonLocalMeansOptions o;
@@ -31,13 +31,18 @@ bool apply(FilterRun& run) {
   o.eta2 = run.parameters.getFloat("eta2");
   o.eta3 = run.parameters.getFloat("eta3");
   o.iterations = run.parameters.getInt("iterations");
-  if (!(o.eta1 > 0) || !(o.eta2 > 0) || !(o.eta3 > 0) || o.iterations < 0) {
-    run.error = "Nothing was changed: eta1, eta2 and eta3 must be positive and iterations at least 0.";
+  if (!check_range("eta1", o.eta1, 0.01, 10, run.error, " mean edge lengths (the work grows with its square)") ||
+      !check_range("eta2", o.eta2, 1e-4, 100, run.error, " mean edge lengths") ||
+      !check_range("eta3", o.eta3, 0.01, 10, run.error, " mean edge lengths") ||
+      !check_range("iterations", o.iterations, 0, 1000, run.error))
     return false;
-  }
   Stopwatch clock;
   run.report(10, "Non-local means denoising");
-  move_vertices(model, hht::nonlocal_means_denoise(positions, faces, o));
+  if (!move_vertices_checked(model, positions, result, [&](hht::Positions& out, std::string&) {
+        out = hht::nonlocal_means_denoise(positions, faces, o);
+        return true;
+      }, run.error))
+    return false;
   run.log(QString("Non-local means denoising: eta1 %1, eta2 %2, eta3 %3 (x mean edge length), %4 iterations; %5 s")
               .arg(o.eta1).arg(o.eta2).arg(o.eta3).arg(o.iterations).arg(clock.seconds(), 0, 'f', 3));
   return true;

@@ -12,6 +12,12 @@ namespace {
 
 enum Band { HighFrequencies, LowFrequencies, InsideBand, OutsideBand };
 
+// Bounds on the parameters: each cycle costs one more cycle and EMD, and 16 cycles gain little
+// over 4 (cycles_bench, docs/benchmarks.md); a gain above 100 or a lambda outside [1e-4, 1e4]
+// mean edges only amplifies round-off or gives the input back.
+constexpr int kMaxCycles = 100;
+constexpr double kMaxGain = 100, kMinLambda = 1e-4, kMaxLambda = 1e4;
+
 void declare(const MeshDocument&, RichParameterList& p) {
   p.addParam(RichEnum("band", HighFrequencies,
                       QStringList{"High frequencies (above cut-off)", "Low frequencies (below cut-off)",
@@ -26,26 +32,27 @@ void declare(const MeshDocument&, RichParameterList& p) {
   p.addParam(RichFloat("lowFrequency", 0.05f, "Band low edge", "For inside / outside: the band's lower frequency."));
   p.addParam(RichFloat("highFrequency", 0.15f, "Band high edge", "For inside / outside: the band's upper frequency."));
   p.addParam(RichFloat("gain", 0.0f, "Gain",
-                       "Multiplies the selected band (the paper's phi): 0 removes it, 1 leaves the mesh as it is, "
-                       "above 1 enhances it, between 0 and 1 attenuates it."));
+                       QString("Multiplies the selected band (the paper's phi): 0 removes it, 1 leaves the mesh as "
+                               "it is, above 1 enhances it, between 0 and 1 attenuates it (0 to %1).").arg(kMaxGain)));
   p.addParam(RichBool("coarseToFine", false, "Keep only the coarsest IMFs instead",
                       "Ignore the band and gain: keep the residue plus the coarsest IMFs (the paper's Fig. 5 "
                       "series, from smooth to the original)."));
   p.addParam(RichInt("coarsestImfs", 0, "Coarsest IMFs kept",
                      "With 'Keep only the coarsest IMFs': how many IMFs above the residue to keep (0 = residue only)."));
-  declare_cycle_and_emd_parameters(p);
   p.addParam(RichInt("cycles", 1, "Cycles averaged",
-                     "Filter along this many Hamiltonian cycles (different seeds) and average the filtered signals. "
-                     "1 is the paper's method; more cycles remove the stripes that filtering along one cycle leaves "
-                     "(spatial neighbours far apart on the cycle are filtered independently), at the cost of one EMD "
-                     "per cycle."));
+                     QString("Filter along this many Hamiltonian cycles (different seeds) and average the filtered "
+                             "signals (1 to %1). 1 is the paper's method; more cycles remove the stripes that "
+                             "filtering along one cycle leaves (spatial neighbours far apart on the cycle are filtered "
+                             "independently), at the cost of one EMD per cycle.").arg(kMaxCycles)));
   p.addParam(RichFloat("lambda", 0.01f, "Position weight (lambda)",
-                       "Weight of the original positions in the reconstruction (eq. 9), relative to the mean edge "
-                       "length, so a scaled copy of the mesh gives the scaled result. Larger: closer to the input."));
+                       QString("Weight of the original positions in the reconstruction (eq. 9), relative to the mean "
+                               "edge length, so a scaled copy of the mesh gives the scaled result. Larger: closer to "
+                               "the input (%1 to %2).").arg(kMinLambda).arg(kMaxLambda)));
   p.addParam(RichBool("literalTarget", false, "Paper's literal target (normal only)",
-                      "Rebuild with the target Laplacian G~ n of eq. 9 as written. It moves vertices tangentially "
-                      "even at gain 1; the default keeps the tangential part of L V and changes only its normal "
-                      "component, so gain 1 returns the mesh exactly."));
+                      expert("Rebuild with the target Laplacian G~ n of eq. 9 as written. It moves vertices "
+                             "tangentially even at gain 1; the default keeps the tangential part of L V and changes "
+                             "only its normal component, so gain 1 returns the mesh exactly.")));
+  declare_cycle_and_emd_parameters(p);
 }
 
 bool apply(FilterRun& run) {
@@ -57,11 +64,11 @@ bool apply(FilterRun& run) {
 
   hht::SpectralMeshFilterOptions options;
   options.cycle = cycle_options(par);
-  options.cycles = std::max(1, par.getInt("cycles"));
+  options.cycles = par.getInt("cycles");
   options.emd = emd_options(par);
   options.gain = par.getFloat("gain");
   options.keep_coarsest = par.getBool("coarseToFine");
-  options.coarsest = std::max(0, par.getInt("coarsestImfs"));
+  options.coarsest = par.getInt("coarsestImfs");
   const int band = std::clamp(par.getEnum("band"), 0, 3);
   const double cutoff = par.getFloat("cutoff");
   const double low = par.getFloat("lowFrequency"), high = par.getFloat("highFrequency");
@@ -73,10 +80,11 @@ bool apply(FilterRun& run) {
     run.error = "Nothing was changed: the band needs 0 <= low <= high <= 0.5 cycles per sample.";
     return false;
   }
-  if (!(options.gain >= 0) || !std::isfinite(options.gain)) {
-    run.error = "Nothing was changed: the gain must be a finite number >= 0.";
+  if (!check_range("the gain", options.gain, 0, kMaxGain, run.error) ||
+      !check_range("cycles", options.cycles, 1, kMaxCycles, run.error, " (each costs one more cycle and EMD)") ||
+      !check_range("coarsestImfs", options.coarsest, 0, kMaxImfsCap, run.error) ||
+      !check_emd_parameters(par, run.error))
     return false;
-  }
   switch (band) {
     case HighFrequencies: options.band = {cutoff, 0.5, false}; break;
     case LowFrequencies: options.band = {0.0, cutoff, false}; break;
@@ -84,21 +92,18 @@ bool apply(FilterRun& run) {
     default: options.band = {low, high, true}; break;
   }
   options.reconstruction.lambda = par.getFloat("lambda");
-  if (!(options.reconstruction.lambda > 0)) {
-    run.error = "Nothing was changed: lambda must be positive.";
+  if (!check_range("lambda", options.reconstruction.lambda, kMinLambda, kMaxLambda, run.error,
+                   " mean edge lengths (smaller leaves the solve without a hold on the positions)"))
     return false;
-  }
   options.reconstruction.target =
       par.getBool("literalTarget") ? hht::ReconstructionTarget::NormalOnly : hht::ReconstructionTarget::KeepTangential;
 
   hht::SpectralMeshFilterReport report;
-  std::string message;
   auto progress = [&](int percent, const char* stage) { run.report(percent, stage); };
-  if (!hht::spectral_mesh_filter(positions, faces, options, result, report, message, progress)) {
-    run.error = nothing_changed(message);
+  if (!move_vertices_checked(model, positions, result, [&](hht::Positions& out, std::string& message) {
+        return hht::spectral_mesh_filter(positions, faces, options, out, report, message, progress);
+      }, run.error))
     return false;
-  }
-  move_vertices(model, result);
 
   const double diagonal = (positions.colwise().maxCoeff() - positions.colwise().minCoeff()).norm();
   if (options.keep_coarsest)

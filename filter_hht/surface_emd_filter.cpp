@@ -1,6 +1,7 @@
 // "HHT: Surface EMD" (3D-EMD, Wang et al. 2012): EMD of a per-vertex signal computed on the
 // surface itself; an IMF or a residue into quality, or the mesh rebuilt from the k-th residue.
 #include "filter_spec.h"
+#include "hht_parameters.h"
 #include "mesh_adapter.h"
 #include "surface_emd_parameters.h"
 
@@ -27,7 +28,8 @@ void declare(const MeshDocument&, RichParameterList& p) {
   p.addParam(RichInt("imf", 1, "IMF number (1 = finest)", "Which IMF goes into quality."));
   declare_surface_emd_parameters(p);
   p.addParam(RichFloat("rampPercentile", 2.0f, "Colour ramp clipping (%)",
-                       "The colour ramp spans this percentile to its complement of the written values."));
+                       "The colour ramp spans this percentile to its complement of the written values (0 to 50)."));
+  declare_emd_parameters(p);
 }
 
 bool apply(FilterRun& run) {
@@ -38,7 +40,9 @@ bool apply(FilterRun& run) {
   if (!read_triangle_mesh(model.cm, positions, faces, run.error)) return false;
   const RichParameterList& par = run.parameters;
   hht::SurfaceEmdSmoothingOptions options;
-  if (!surface_emd_smoothing_options(par, options, run.error)) return false;
+  if (!surface_emd_smoothing_options(par, options, run.error) ||
+      !check_range("the colour ramp clipping", par.getFloat("rampPercentile"), 0, 50, run.error, " percent"))
+    return false;
   const int output = std::clamp(par.getEnum("output"), 0, 2);
   const bool from_quality = par.getEnum("source") == CurrentQuality;
   std::string message;
@@ -51,11 +55,10 @@ bool apply(FilterRun& run) {
     run.report(5, "Surface EMD and reconstruction");
     hht::Positions result;
     hht::SurfaceEmdSmoothingReport report;
-    if (!hht::surface_emd_smoothing(positions, faces, options, result, report, message)) {
-      run.error = nothing_changed(message);
+    if (!move_vertices_checked(model, positions, result, [&](hht::Positions& out, std::string& why) {
+          return hht::surface_emd_smoothing(positions, faces, options, out, report, why);
+        }, run.error))
       return false;
-    }
-    move_vertices(model, result);
     run.log(QString("Surface EMD smoothing: %1 IMFs (sifts per IMF: %2), rebuilt from residue %3; %4 "
                     "factorisations; largest vertex move %5")
                 .arg(report.imfs).arg(QStringList([&] {
@@ -108,7 +111,8 @@ bool apply(FilterRun& run) {
     values = decomposition.residue;
     for (int k = std::min(options.residue, count); k < count; ++k) values += decomposition.imfs[k];
   }
-  const auto range = show_as_quality(model, values, par.getFloat("rampPercentile"));
+  std::pair<double, double> range;
+  if (!show_as_quality(model, values, par.getFloat("rampPercentile"), range, run.error)) return false;
   QStringList sifts;
   for (int k : decomposition.sifts) sifts << QString::number(k);
   run.log(QString("Surface EMD of the %1: %2 IMFs (sifts per IMF: %3), %4 factorisations")

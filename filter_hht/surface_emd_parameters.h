@@ -7,6 +7,7 @@
 
 namespace hht_plugin {
 
+// The residue k and lambda; the EMD rules are declared last (declare_emd_parameters, for experts).
 void declare_surface_emd_parameters(RichParameterList& p);
 // Everything but the feature options; fails with the reason on out-of-range values.
 bool surface_emd_smoothing_options(const RichParameterList& p, hht::SurfaceEmdSmoothingOptions& o, QString& error);

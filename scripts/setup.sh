@@ -16,6 +16,7 @@ PACKAGES=(
   # slower (docs/benchmarks.md); OpenBLAS takes over libblas.so.3 through the alternatives.
   libopenblas0-pthread
   xvfb xauth libgl1-mesa-dri libcgal-demo bc time
+  xdotool x11-apps netpbm
 )
 
 missing=()

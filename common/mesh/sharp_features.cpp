@@ -187,6 +187,11 @@ Positions filter_normals(const Topology& topo, const FaceGeometry& g, int iterat
     }
   const double sigma_s = interior > 0 ? spacing / interior : 1.0;
   const double inv_s = 1.0 / (2 * sigma_s * sigma_s), inv_r = 1.0 / (2 * sigma_r * sigma_r);
+  // The weights are held in float: areas in units of a power of two near their mean, so that
+  // coordinates of 1e30 (areas of 1e60) or 1e-20 neither overflow nor vanish, and, a power of
+  // two scaling exactly, the filtered normals of an ordinary mesh are unchanged to the bit.
+  const double mean_area = nf > 0 ? g.areas.sum() / nf : 0.0;
+  const double area_unit = mean_area > 0 && std::isfinite(mean_area) ? std::ldexp(1.0, -std::ilogb(mean_area)) : 1.0;
   // area times spatial kernel, per (face, neighbour) pair: fixed over the iterations
   std::vector<float> spatial(topo.face_faces.items.size());
   parallel_for(0, nf, [&](int first, int last) {
@@ -194,7 +199,7 @@ Positions filter_normals(const Topology& topo, const FaceGeometry& g, int iterat
       for (int i = topo.face_faces.begin(f); i < topo.face_faces.end(f); ++i) {
         const int j = topo.face_faces.items[i];
         spatial[i] = static_cast<float>(
-            g.areas[j] * std::exp(-(g.centroids.row(f) - g.centroids.row(j)).squaredNorm() * inv_s));
+            area_unit * g.areas[j] * std::exp(-(g.centroids.row(f) - g.centroids.row(j)).squaredNorm() * inv_s));
       }
   });
 

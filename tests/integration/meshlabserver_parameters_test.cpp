@@ -11,6 +11,11 @@
 #include "evaluation/gaussian_noise.h"
 #include "mesh/mean_curvature.h"
 #include "filters/spectral_mesh_filter.h"
+#include "filters/guided_normal_denoise.h"
+#include "filters/noise_adaptive_smoothing.h"
+#include "filters/nonlocal_means_denoise.h"
+#include "filters/surface_emd.h"
+#include "filters/surface_emd_smoothing.h"
 
 #include <gtest/gtest.h>
 #include <wrap/io_trimesh/export_ply.h>
@@ -464,6 +469,164 @@ TEST(MeshlabserverParameters, CompareTwoDifferentMeshesEveryOutput) {
     EXPECT_NEAR(std::stod(ea[1]), expected_ea, 1e-4 * expected_ea);
     EXPECT_NEAR(std::stod(ev[1]), expected_ev, 1e-3 * expected_ev);
   }
+}
+
+}  // namespace
+}  // namespace hht::test
+
+// ------------------------------------------------- the newer filters' parameter paths
+
+namespace hht::test {
+namespace {
+
+// Fandisk with 5% noise along random directions, saved as MeshLab will read it.
+struct NoisyInput {
+  Input in;
+  Positions noisy;
+  std::string path;
+};
+
+NoisyInput noisy_fandisk(const std::string& name) {
+  NoisyInput n{read_input("fandisk"), {}, output_path(name + ".ply")};
+  n.noisy = add_gaussian_noise(n.in.positions, n.in.faces, 5.0, NoiseDirection::Random, 5).cast<float>().cast<double>();
+  TriMesh m;
+  EXPECT_EQ(vcg::tri::io::ImporterOFF<TriMesh>::Open(m, data_mesh("fandisk").c_str()), 0);
+  for (int v = 0; v < m.vn; ++v) m.vert[v].P() = vcg::Point3d(n.noisy(v, 0), n.noisy(v, 1), n.noisy(v, 2));
+  EXPECT_EQ(vcg::tri::io::ExporterPLY<TriMesh>::Save(m, n.path.c_str(), 0, true), 0);
+  return n;
+}
+
+TEST(MeshlabserverParameters, AdaptiveSmoothStrengthNoiseAndEmd) {
+  const NoisyInput n = noisy_fandisk("adaptive_input");
+  struct Case {
+    std::string tag;
+    std::vector<std::pair<std::string, std::string>> overrides;
+    std::function<void(NoiseAdaptiveSmoothingOptions&)> set;
+  };
+  const Case cases[] = {
+      {"strength", {{"strength", "2.5"}}, [](NoiseAdaptiveSmoothingOptions& o) { o.strength = f(2.5); }},
+      {"noise", {{"noisePercent", "8"}}, [](NoiseAdaptiveSmoothingOptions& o) { o.noise = f(8) / 100.0; }},
+      {"emd", {{"seed", "2"}, {"sdThreshold", "0.3"}, {"maxSifts", "7"}, {"minExtrema", "9"}, {"maxImfs", "2"}},
+       [](NoiseAdaptiveSmoothingOptions& o) {
+         o.cycle.seed = 2;
+         o.emd.sd_threshold = f(0.3);
+         o.emd.max_sifts = 7;
+         o.emd.min_extrema = 9;
+         o.emd.max_imfs = 2;
+       }},
+  };
+  Positions previous;
+  for (const Case& c : cases) {
+    NoiseAdaptiveSmoothingOptions o;
+    c.set(o);
+    Positions expected;
+    NoiseAdaptiveSmoothingReport report;
+    std::string error;
+    ASSERT_TRUE(noise_adaptive_smooth(n.noisy, n.in.faces, o, expected, report, error)) << error;
+    const ServerRun run = run_resource(n.path, "smooth.mlx", c.overrides, "adaptive_" + c.tag);
+    expect_positions(saved_positions(run), expected, n.in.diagonal, c.tag);
+    if (previous.rows() > 0)  // each option changes the result
+      EXPECT_GT((expected - previous).rowwise().norm().maxCoeff(), 1e-5 * n.in.diagonal) << c.tag;
+    previous = expected;
+  }
+}
+
+TEST(MeshlabserverParameters, GuidedDenoiseRoundsPassesSigmaIterations) {
+  const NoisyInput n = noisy_fandisk("guided_input");
+  GuidedNormalDenoiseOptions o;
+  o.rounds = 2;
+  o.normal_passes = 3;
+  o.sigma = f(0.5);
+  o.vertex_iterations = 7;
+  Positions expected, defaults;
+  std::string error;
+  ASSERT_TRUE(guided_normal_denoise(n.noisy, n.in.faces, o, expected, error)) << error;
+  ASSERT_TRUE(guided_normal_denoise(n.noisy, n.in.faces, {}, defaults, error)) << error;
+  EXPECT_GT((expected - defaults).rowwise().norm().maxCoeff(), 1e-4 * n.in.diagonal);
+  const ServerRun run = run_resource(
+      n.path, "guided_denoise.mlx", {{"rounds", "2"}, {"normalPasses", "3"}, {"sigma", "0.5"}, {"vertexIterations", "7"}},
+      "guided");
+  expect_positions(saved_positions(run), expected, n.in.diagonal, "guided");
+}
+
+TEST(MeshlabserverParameters, NonLocalMeansEtasAndIterations) {
+  const NoisyInput n = noisy_fandisk("nlm_input");
+  NonLocalMeansOptions o;
+  o.eta1 = f(2.2);
+  o.eta2 = f(0.9);
+  o.eta3 = f(0.7);
+  o.iterations = 2;
+  const Positions expected = nonlocal_means_denoise(n.noisy, n.in.faces, o);
+  EXPECT_GT((expected - nonlocal_means_denoise(n.noisy, n.in.faces, {})).rowwise().norm().maxCoeff(),
+            1e-4 * n.in.diagonal);
+  const ServerRun run = run_resource(n.path, "nonlocal_means.mlx",
+                                     {{"eta1", "2.2"}, {"eta2", "0.9"}, {"eta3", "0.7"}, {"iterations", "2"}}, "nlm");
+  expect_positions(saved_positions(run), expected, n.in.diagonal, "nlm");
+}
+
+TEST(MeshlabserverParameters, SurfaceEmdEveryOutputResidueAndOptions) {
+  const Input in = read_input("fandisk");
+  MeanCurvature curvature;
+  std::string error;
+  ASSERT_TRUE(mean_curvature(in.positions, in.faces, curvature, error)) << error;
+  SurfaceEmdOptions emd;
+  emd.sd_threshold = f(0.2);
+  emd.max_sifts = 10;
+  emd.min_extrema = 12;
+  emd.max_imfs = 3;
+  SurfaceEmdResult r;
+  ASSERT_TRUE(surface_emd(in.positions, in.faces, curvature.signal, emd, r, error)) << error;
+  ASSERT_EQ(r.imfs.size(), 3u);
+  const std::vector<std::pair<std::string, std::string>> emd_overrides = {
+      {"sdThreshold", "0.2"}, {"maxSifts", "10"}, {"minExtrema", "12"}, {"maxImfs", "3"}};
+  auto with = [&](std::vector<std::pair<std::string, std::string>> more) {
+    more.insert(more.end(), emd_overrides.begin(), emd_overrides.end());
+    return more;
+  };
+  // IMF 2 into quality
+  expect_values(saved_quality(run_resource(data_mesh("fandisk"), "surface_emd.mlx", with({{"imf", "2"}}), "semd_imf2")),
+                r.imfs[1], "IMF 2");
+  // the residue after the finest IMF: G minus IMF 1
+  const Eigen::VectorXd residue1 = r.residue + r.imfs[1] + r.imfs[2];
+  expect_values(saved_quality(run_resource(data_mesh("fandisk"), "surface_emd.mlx",
+                                           with({{"output", "1"}, {"residue", "1"}}), "semd_residue1")),
+                residue1, "residue 1");
+  // the mesh rebuilt from residue 2 with lambda 0.5
+  SurfaceEmdSmoothingOptions o;
+  o.emd = emd;
+  o.residue = 2;
+  o.reconstruction.lambda = f(0.5);
+  Positions expected;
+  SurfaceEmdSmoothingReport report;
+  ASSERT_TRUE(surface_emd_smoothing(in.positions, in.faces, o, expected, report, error)) << error;
+  EXPECT_GT((expected - in.positions).rowwise().norm().maxCoeff(), 1e-4 * in.diagonal);
+  expect_positions(saved_positions(run_resource(data_mesh("fandisk"), "surface_emd.mlx",
+                                                with({{"output", "2"}, {"residue", "2"}, {"lambda", "0.5"}}),
+                                                "semd_rebuild")),
+                   expected, in.diagonal, "rebuilt from residue 2");
+}
+
+TEST(MeshlabserverParameters, FeatureCentricAngleAndPasses) {
+  const NoisyInput n = noisy_fandisk("centric_input");
+  SurfaceEmdSmoothingOptions o;
+  o.feature_centric = true;
+  o.residue = 2;
+  o.features.angle_degrees = f(40);
+  o.features.filter_iterations = 2;
+  Positions expected, defaults;
+  SurfaceEmdSmoothingReport report, default_report;
+  std::string error;
+  ASSERT_TRUE(surface_emd_smoothing(n.noisy, n.in.faces, o, expected, report, error)) << error;
+  SurfaceEmdSmoothingOptions d;
+  d.feature_centric = true;
+  d.residue = 2;
+  ASSERT_TRUE(surface_emd_smoothing(n.noisy, n.in.faces, d, defaults, default_report, error)) << error;
+  EXPECT_NE(report.feature_vertices, default_report.feature_vertices);
+  const ServerRun run = run_resource(
+      n.path, "feature_centric_emd.mlx", {{"residue", "2"}, {"featureAngle", "40"}, {"normalFilterIterations", "2"}},
+      "centric");
+  expect_positions(saved_positions(run), expected, n.in.diagonal, "feature-centric");
+  EXPECT_NE(run.log.find(std::to_string(report.feature_vertices) + " feature vertices"), std::string::npos) << run.log;
 }
 
 }  // namespace

@@ -8,7 +8,7 @@ system_lib=/usr/lib/x86_64-linux-gnu/meshlab
 lib="$stage/lib/x86_64-linux-gnu/meshlab"
 rm -rf "$stage"
 mkdir -p "$stage/bin" "$lib/plugins"
-cp /usr/bin/meshlabserver "$stage/bin/"
+cp /usr/bin/meshlabserver /usr/bin/meshlab "$stage/bin/"  # the GUI for tests/gui/meshlab2020_window_test.sh
 ln -s "$system_lib/libmeshlab-common.so" "$lib/"
 for p in "$system_lib"/plugins/*.so; do
   # an installed copy of this plugin must not shadow the one under test

@@ -1,0 +1,128 @@
+// The edges of the plugin through meshlabserver (issue 10): parameters outside their ranges are
+// refused with a message naming the parameter and its range, before any work (no run of
+// minutes, nothing saved); a result that moved vertices farther than the bounding-box diagonal is
+// refused; coordinates of about 1e30 and 1e-20 give the scaled result of the unscaled mesh.
+#include "meshlabserver_harness.h"
+
+#include "mesh/mesh_checks.h"
+
+#include <gtest/gtest.h>
+#include <wrap/io_trimesh/export_ply.h>
+#include <wrap/io_trimesh/import_off.h>
+
+#include <chrono>
+#include <filesystem>
+
+namespace hht::test {
+namespace {
+
+struct Refusal {
+  std::string tag;
+  std::string script;
+  std::vector<std::pair<std::string, std::string>> overrides;
+  std::string message;  // part of the expected message
+};
+
+void PrintTo(const Refusal& r, std::ostream* os) { *os << r.tag; }
+
+class ExtremeParameter : public ::testing::TestWithParam<Refusal> {};
+
+TEST_P(ExtremeParameter, RefusedAtOnceWithItsRange) {
+  const Refusal& r = GetParam();
+  const auto start = std::chrono::steady_clock::now();
+  const ServerRun run = run_script(MeshLab::V2020, {data_mesh("fandisk")}, chain_scripts(r.tag, {r.script}, r.overrides),
+                                   r.tag);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_NE(run.exit_code, 0) << run.log;
+  EXPECT_NE(run.log.find("failed: Nothing was changed: " + r.message), std::string::npos) << run.log;
+  EXPECT_FALSE(std::filesystem::exists(run.output)) << "a refused filter saved " << run.output;
+  EXPECT_LT(seconds, 60) << "refusing took " << seconds << " s";
+}
+
+const Refusal kRefusals[] = {
+    // the issue's cases: minutes of work, or vertices moved by 1e5 (lambda) and 3e7 (gain) on a mesh of size 1.5
+    {"cycles_100000", "enhance.mlx", {{"cycles", "100000"}}, "cycles must lie in [1, 100]"},
+    {"lambda_1e-12", "enhance.mlx", {{"lambda", "1e-12"}}, "lambda must lie in [0.0001, 10000]"},
+    {"gain_1e9", "enhance.mlx", {{"gain", "1e9"}}, "the gain must lie in [0, 100]"},
+    {"imf_999", "hilbert_spectra.mlx", {{"output", "0"}, {"imf", "999"}, {"histogramFile", ""}},
+     "the decomposition has"},
+    {"max_sifts", "smooth.mlx", {{"maxSifts", "1000000"}}, "maxSifts must lie in [1, 1000]"},
+    {"denoise_cycles", "denoise.mlx", {{"cycles", "100000"}}, "cycles must lie in [1, 100]"},
+    {"denoise_passes", "denoise.mlx", {{"refineNormalPasses", "100000"}}, "refineNormalPasses must lie in [0, 1000]"},
+    {"tries", "hamiltonian_cycle.mlx", {{"tries", "100000"}}, "tries must lie in [1, 100]"},
+    {"ramp", "curvature_signal.mlx", {{"rampPercentile", "80"}}, "the colour ramp clipping must lie in [0, 50]"},
+    {"bins", "hilbert_spectra.mlx", {{"bins", "0"}}, "the histogram bins must lie in [1, 10000]"},
+    {"noise_sigma", "add_noise.mlx", {{"sigmaPercent", "1e6"}}, "sigma must lie in [0, 1000]"},
+    {"bilateral_radius", "bilateral.mlx", {{"sigmaC", "1000"}}, "sigma_c must lie in [0.01, 10]"},
+    {"nlm_radius", "nonlocal_means.mlx", {{"eta1", "1e6"}}, "eta1 must lie in [0.01, 10]"},
+    {"nlm_iterations", "nonlocal_means.mlx", {{"iterations", "1000000"}}, "iterations must lie in [0, 1000]"},
+    {"surface_emd_lambda", "surface_emd_smooth.mlx", {{"lambda", "1e-9"}}, "lambda must lie in [0.0001, 10000]"},
+    {"centric_angle", "feature_centric_emd.mlx", {{"featureAngle", "720"}}, "the feature angle must lie in [0, 180]"},
+    {"centric_passes", "feature_centric_emd.mlx", {{"normalFilterIterations", "-3"}},
+     "normalFilterIterations must lie in [0, 1000]"},
+    {"guided_rounds", "guided_denoise.mlx", {{"rounds", "1000000"}}, "rounds must lie in [1, 100]"},
+    {"adaptive_strength", "smooth.mlx", {{"strength", "1e9"}}, "the strength must lie in [0.1, 10]"},
+};
+
+INSTANTIATE_TEST_SUITE_P(Fandisk, ExtremeParameter, ::testing::ValuesIn(kRefusals),
+                         [](const ::testing::TestParamInfo<Refusal>& info) {
+                           std::string name = info.param.tag;
+                           for (char& c : name)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return name;
+                         });
+
+// Fandisk scaled by `scale`, as a PLY in the test's folder.
+std::string scaled_fandisk(double scale, const std::string& name) {
+  TriMesh m;
+  EXPECT_EQ(vcg::tri::io::ImporterOFF<TriMesh>::Open(m, data_mesh("fandisk").c_str()), 0);
+  for (auto& v : m.vert) v.P() *= scale;
+  const std::string path = output_path(name + ".ply");
+  EXPECT_EQ(vcg::tri::io::ExporterPLY<TriMesh>::Save(m, path.c_str(), 0, true), 0);
+  return path;
+}
+
+Positions positions_of(const ServerRun& run) {
+  TriMesh m;
+  load(run, m);
+  Positions p;
+  Faces f;
+  mesh_to_arrays(m, p, f);
+  return p;
+}
+
+// Each script on Fandisk at about 1e30 and 1e-20 gives the result at scale 1, scaled: finite, and
+// the same up to single precision. The scales are powers of two (2^100 = 1.3e30, 2^-66 = 1.4e-20)
+// so that the float input is exactly the scaled Fandisk: the EMD's choice of extrema follows
+// rounding differences of 1e-7, which a scale like 1e30 would bring in. (denoise.mlx at 1e30
+// wrote non-finite positions.)
+class ExtremeScale : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ExtremeScale, ScaledMeshGivesTheScaledResult) {
+  const std::string script = GetParam();
+  const std::string tag = script.substr(0, script.find('.'));
+  const ServerRun reference = run_script(MeshLab::V2020, {data_mesh("fandisk")}, resource(script), tag + "_1");
+  const Positions expected = positions_of(reference);
+  ASSERT_GT(expected.rows(), 0);
+  const double diagonal = bounding_box_diagonal(expected);
+  for (double scale : {0x1p100, 0x1p-66}) {
+    const std::string name = tag + (scale > 1 ? "_2e100" : "_2e-66");
+    const ServerRun run = run_script(MeshLab::V2020, {scaled_fandisk(scale, name + "_input")}, resource(script), name);
+    const Positions result = positions_of(run);
+    ASSERT_EQ(result.rows(), expected.rows()) << name;
+    EXPECT_TRUE(result.allFinite()) << name;
+    const double difference = (result / scale - expected).rowwise().norm().maxCoeff();
+    EXPECT_LT(difference, 1e-5 * diagonal) << name << ": the scaled run differs from the unscaled one by "
+                                           << difference / diagonal << " diagonals";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Scripts, ExtremeScale,
+                         ::testing::Values("denoise.mlx", "smooth.mlx", "enhance.mlx", "guided_denoise.mlx",
+                                           "bilateral.mlx", "nonlocal_means.mlx", "surface_emd_smooth.mlx"),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                           return info.param.substr(0, info.param.find('.'));
+                         });
+
+}  // namespace
+}  // namespace hht::test
