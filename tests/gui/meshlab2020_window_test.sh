@@ -5,9 +5,10 @@
 # in its dialog. Passes when that dialog opened, MeshLab's log shows the filter's own lines and
 # "Applied filter", and the mesh on screen changed (pixels of the 3D view before and after).
 #   sh tests/gui/meshlab2020_window_test.sh STAGE_DIR OUT_DIR [IMAGES_DIR]
-# Screenshots in OUT_DIR: start, filters_menu, dialog, applied (.png); with IMAGES_DIR, the
-# README's pictures are written there too (meshlab2020_filters_menu.png, denoise_before.png,
-# denoise_after.png). Screen positions are those of MeshLab 2020.09 at 1280x900 (no window
+# Screenshots in OUT_DIR: start_flat, start, filters_menu, dialog, applied, applied_flat (.png;
+# the comparison is made in per-vertex shading, the flat ones are for the eye); with IMAGES_DIR, the
+# README's pictures are written there too (meshlab2020_filters_menu.png, meshlab2020_denoise_before.png,
+# meshlab2020_denoise_after.png). Screen positions are those of MeshLab 2020.09 at 1280x900 (no window
 # manager: the window does not move).
 set -eu
 stage=$(realpath "$1"); out=$(realpath -m "$2"); images=${3:-}
@@ -49,6 +50,11 @@ shot() {
 # The 3D view (left of the layer panel, above the info bar).
 view() { pamcut -left 0 -top 72 -width 860 -height 705 "$tmp/$1.ppm"; }
 
+shot start_flat
+# Smooth (per-vertex) shading for the comparison: MeshLab switches to it after a filter that
+# updates the normals, which alone would change the picture of an unchanged mesh.
+xdotool mousemove 1048 496 sleep 0.3 click 1                         # Shading: Vert
+sleep 2
 shot start
 grep -q "Plugins Dir is: $stage" "$out/meshlab.log" || {
   echo "FAIL: MeshLab did not load the staged plugins from $stage:"; head -5 "$out/meshlab.log"; exit 1; }
@@ -72,6 +78,9 @@ for _ in $(seq 60); do grep -q "Applied filter HHT: Feature-Preserving Denoise" 
 xdotool mousemove $((X + 144)) $((Y + HEIGHT - 23)) sleep 0.3 click 1          # Close
 sleep 3
 shot applied
+xdotool mousemove 1093 496 sleep 0.3 click 1                         # Shading: Face (the README's pictures)
+sleep 2
+shot applied_flat
 
 grep "LOG: " "$out/meshlab.log" || true
 status=0
@@ -89,8 +98,8 @@ fi
 if [ -n "$images" ] && [ $status -eq 0 ]; then
   mkdir -p "$images"
   pamcut -left 0 -top 0 -width 830 -height 900 "$tmp/filters_menu.ppm" | pnmtopng > "$images/meshlab2020_filters_menu.png"
-  pamcut -left 150 -top 230 -width 600 -height 420 "$tmp/start.ppm" | pnmtopng > "$images/denoise_before.png"
-  pamcut -left 150 -top 230 -width 600 -height 420 "$tmp/applied.ppm" | pnmtopng > "$images/denoise_after.png"
+  pamcut -left 150 -top 230 -width 600 -height 420 "$tmp/start_flat.ppm" | pnmtopng > "$images/meshlab2020_denoise_before.png"
+  pamcut -left 150 -top 230 -width 600 -height 420 "$tmp/applied_flat.ppm" | pnmtopng > "$images/meshlab2020_denoise_after.png"
 fi
 [ $status -eq 0 ] && echo "PASS"
 exit $status
