@@ -130,7 +130,7 @@ bool apply(FilterRun& run) {
       !check_range("cycles", o.cycles, 1, kMaxCycles, run.error, " (each costs one more cycle and EMD)") ||
       !check_emd_parameters(par, run.error) ||
       !check_range("shortLinePasses", o.short_line_passes, 0, kMaxPasses, run.error) ||
-      !check_range("lambda", o.reconstruction.lambda, 1e-4, 1e4, run.error, " mean edge lengths") ||
+      !check_lambda(o.reconstruction.lambda, run.error) ||
       !check_range("refineNormalPasses", o.refine_normal_passes, 0, kMaxPasses, run.error) ||
       !check_range("refineVertexIterations", o.refine_vertex_iterations, 0, kMaxPasses, run.error))
     return false;

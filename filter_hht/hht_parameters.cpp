@@ -50,4 +50,9 @@ bool check_emd_parameters(const RichParameterList& p, QString& error) {
          check_range("maxImfs", p.getInt("maxImfs"), 0, kMaxImfsCap, error);
 }
 
+bool check_lambda(double lambda, QString& error) {
+  return check_range("lambda", lambda, kMinLambda, kMaxLambda, error,
+                     " mean edge lengths (smaller leaves the solve without a hold on the positions)");
+}
+
 }  // namespace hht_plugin

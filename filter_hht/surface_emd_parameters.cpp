@@ -24,7 +24,7 @@ bool surface_emd_smoothing_options(const RichParameterList& p, hht::SurfaceEmdSm
   o.emd.max_imfs = p.getInt("maxImfs");
   o.reconstruction.lambda = p.getFloat("lambda");
   return check_range("residue", o.residue, 0, kMaxImfsCap, error) && check_emd_parameters(p, error) &&
-         check_range("lambda", o.reconstruction.lambda, 1e-4, 1e4, error, " mean edge lengths");
+         check_lambda(o.reconstruction.lambda, error);
 }
 
 }  // namespace hht_plugin
