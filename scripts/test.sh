@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# The test command: set up, build, run every test (unit tests, meshlabserver tests, and the
-# MeshLab 2022.02 tests in a Debian 13 root). The 2022.02 part is skipped, with a message
+# The test command: set up, build, run every test (unit tests, meshlabserver tests, the window
+# tests, and the MeshLab 2022.02 tests in a Debian 13 root), then the unit tests under ASan/UBSan. The 2022.02 part is skipped, with a message
 # saying why, only when this machine cannot make that root.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -24,3 +24,5 @@ if [ "${meshlabserver_tests:-0}" -lt 60 ]; then
   exit 1
 fi
 ctest --output-on-failure -j"$(nproc)"
+# The unit tests (the fuzz test included) again under AddressSanitizer and UBSan, in build-asan/.
+"$ROOT/scripts/sanitize.sh"

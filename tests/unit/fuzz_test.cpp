@@ -140,10 +140,13 @@ const std::vector<FuzzMesh>& fuzz_meshes() {
   return meshes;
 }
 
+// memcmp, which may not be given the null data() of an empty array.
+bool same_bytes(const void* a, const void* b, size_t bytes) { return bytes == 0 || std::memcmp(a, b, bytes) == 0; }
+
 bool same_bits(const ArrayMesh& a, const ArrayMesh& b) {
   return a.positions.rows() == b.positions.rows() && a.faces.rows() == b.faces.rows() &&
-         std::memcmp(a.positions.data(), b.positions.data(), sizeof(double) * a.positions.size()) == 0 &&
-         std::memcmp(a.faces.data(), b.faces.data(), sizeof(int) * a.faces.size()) == 0;
+         same_bytes(a.positions.data(), b.positions.data(), sizeof(double) * a.positions.size()) &&
+         same_bytes(a.faces.data(), b.faces.data(), sizeof(int) * a.faces.size());
 }
 
 // What one entry point gave: refused (with `error`), or the arrays it computed.
