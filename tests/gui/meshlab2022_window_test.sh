@@ -26,19 +26,8 @@ sleep 2
 xdotool windowmove "$window" 0 0 windowsize "$window" 1280 900
 sleep 3
 
-# The screen with the open menus pasted over it: in a grab of the root alone they are black.
-shot() {
-  xwd -root -silent | xwdtopnm 2> /dev/null > "$tmp/screen.ppm"
-  for w in $(xdotool search --maxdepth 1 --onlyvisible --name ""); do
-    eval "$(xdotool getwindowgeometry --shell "$w")"
-    [ "$WIDTH" -lt 1280 ] || continue
-    xwd -id "$w" -silent | xwdtopnm 2> /dev/null > "$tmp/popup.ppm"
-    pnmpaste "$tmp/popup.ppm" "$X" "$Y" "$tmp/screen.ppm" > "$tmp/pasted.ppm" 2> /dev/null
-    mv "$tmp/pasted.ppm" "$tmp/screen.ppm"
-  done
-  pnmtopng "$tmp/screen.ppm" > "$out/$1.png" 2> /dev/null
-  cp "$tmp/screen.ppm" "$tmp/$1.ppm"
-}
+# shot NAME: the screen, open menus included, as $out/NAME.png and $tmp/NAME.ppm.
+. "$(dirname "$0")/screen_shot.sh"
 # Pixels of the 3D view coloured red to yellow (the low end of MeshLab's quality ramp): none
 # on the grey mesh and blue background MeshLab starts with.
 ramp_pixels() {
