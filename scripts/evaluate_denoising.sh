@@ -56,7 +56,7 @@ run_case() {  # run_case <name> <truth> <noise %> <seed> <features true|false> <
   echo "| $name | noisy input | $ea | $ev | - |"
   local methods=(ours paper bilateral twostep laplacian taubin hc)
   script ours.mlx "$(with "$(resource_filter denoise)" detectFeatures="$features")"
-  script paper.mlx "$(with "$(resource_filter denoise)" detectFeatures="$features" refineNormalPasses=0)"
+  script paper.mlx "$(with "$(resource_filter denoise)" detectFeatures="$features" refineNormalPasses=0 paperStage=true untangle=false)"
   script bilateral.mlx "$(with "$(resource_filter bilateral)" sigmaS="$sigma_s" passes="$passes")"
   script twostep.mlx "$(twostep "$steps")"
   script laplacian.mlx "$LAPLACIAN"
@@ -71,7 +71,7 @@ run_case() {  # run_case <name> <truth> <noise %> <seed> <features true|false> <
     local label
     case $m in
       ours) label="HHT: Feature-Preserving Denoise (denoise.mlx$([ "$features" = false ] && echo ', no features' || true))";;
-      paper) label="HHT, the paper's method alone (refineNormalPasses 0)";;
+      paper) label="HHT, the paper's method alone (paperStage on, untangle off, refineNormalPasses 0)";;
       bilateral) label="Bilateral (sigma_c 0.4, sigma_s $sigma_s, $passes passes)";;
       twostep) label="TwoStep Smooth ($steps steps, 60 deg, 20, 20)";;
       laplacian) label="Laplacian Smooth (defaults)";;
