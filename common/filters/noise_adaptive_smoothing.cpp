@@ -95,7 +95,7 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
   const Positions v = (positions.rowwise() - centre) / edge;  // unit mean edge
   const VertexAdjacency adjacency = vertex_adjacency(faces, n);
   clock.done("adjacency");
-  const double diagonal = (positions.colwise().maxCoeff() - positions.colwise().minCoeff()).norm();
+  const double diagonal = bounding_box_diagonal(positions);
   Positions x;
   BiharmonicLowPassReport solve;
   const bool converged = biharmonic_low_pass(adjacency, v, report.mu, kSmoothingMaxError * diagonal / edge, x, solve,

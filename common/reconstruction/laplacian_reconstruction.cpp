@@ -2,6 +2,7 @@
 
 #include "mesh/cotangent_laplacian.h"
 #include "evaluation/gaussian_noise.h"
+#include "mesh/mesh_checks.h"
 
 #include <Eigen/CholmodSupport>
 
@@ -68,7 +69,7 @@ bool reconstruct_positions(const Positions& positions, const Faces& faces, const
   };
 
   // Proven bound on the position error (scaled units), and the stop in those units.
-  const double diagonal = (v.colwise().maxCoeff() - v.colwise().minCoeff()).norm();
+  const double diagonal = bounding_box_diagonal(v);
   auto error_bound = [&](const Positions& residual) { return residual.norm() / lambda2; };
   const double max_error = options.max_error * diagonal;
 
