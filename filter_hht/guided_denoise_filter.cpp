@@ -32,12 +32,11 @@ bool apply(FilterRun& run) {
   o.normal_passes = run.parameters.getInt("normalPasses");
   o.sigma = run.parameters.getFloat("sigma");
   o.vertex_iterations = run.parameters.getInt("vertexIterations");
-  if (o.rounds < 1 || o.rounds > 100 || o.normal_passes < 0 || o.normal_passes > 1000 || !(o.sigma >= 0.05) ||
-      !(o.sigma <= 2) || o.vertex_iterations < 0 || o.vertex_iterations > 1000) {
-    run.error = "Nothing was changed: rounds must lie in [1, 100], passes and iterations in [0, 1000], sigma in "
-                "[0.05, 2].";
+  if (!check_range("rounds", o.rounds, 1, 100, run.error) ||
+      !check_range("normalPasses", o.normal_passes, 0, 1000, run.error) ||
+      !check_range("sigma", o.sigma, 0.05, 2, run.error) ||
+      !check_range("vertexIterations", o.vertex_iterations, 0, 1000, run.error))
     return false;
-  }
   Stopwatch clock;
   run.report(10, "Guided normal filtering and vertex update");
   if (!move_vertices_checked(model, positions, result, [&](hht::Positions& out, std::string& message) {
