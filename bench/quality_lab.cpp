@@ -5,6 +5,9 @@
 #include "evaluation/denoise_metrics.h"
 #include "evaluation/gaussian_noise.h"
 #include "mesh/mean_curvature.h"
+#include "mesh/vertex_normals.h"
+#include "mesh/vertex_adjacency.h"
+#include "reconstruction/biharmonic_low_pass.h"
 #include "filters/spectral_mesh_filter.h"
 #include "filters/guided_normal_denoise.h"
 #include "filters/feature_preserving_denoise.h"
@@ -392,18 +395,90 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "r") {  // risk of the normal edge differences: truth against SURE
+    std::string err;
+    NoiseAdaptiveSmoothingOptions o;
+    Positions base;
+    NoiseAdaptiveSmoothingReport rep;
+    if (!noise_adaptive_smooth(noisy, f, o, base, rep, err)) return 1;
+    const double sigma = std::getenv("LAB_TRUE_SIGMA") ? level : rep.sigma_used;
+    const Eigen::RowVector3d centre = noisy.colwise().mean();
+    const Positions v = (noisy.rowwise() - centre) / h, c = (clean.rowwise() - centre) / h;
+    const Positions nn = area_weighted_vertex_normals(base, f);
+    const VertexAdjacency adj = vertex_adjacency(f, n);
+    std::mt19937 zr(5);
+    Positions z(n, 3);
+    for (int i = 0; i < n; ++i)
+      for (int k = 0; k < 3; ++k) z(i, k) = (zr() & 1) ? 1.0 : -1.0;
+    auto edges = [&](auto&& fn) {
+      for (int i = 0; i < n; ++i)
+        for (const int* j = adj.begin(i); j != adj.end(i); ++j)
+          if (*j > i) fn(i, *j);
+    };
+    std::printf("  sigma %.3f\n", sigma);
+    for (double s : {0.25, 0.5, 0.7, 1.0, 1.4, 2.0, 2.8, 4.0, 5.6, 8.0}) {
+      const double mu = kMuScale / std::sqrt(s * sigma);
+      Positions x, az;
+      BiharmonicLowPassReport br;
+      biharmonic_low_pass(adj, v, mu, 1e-7, x, br);
+      biharmonic_low_pass(adj, z, mu, 1e-7, az, br);
+      Eigen::VectorXd a(n), t(n);
+      for (int i = 0; i < n; ++i) {
+        a(i) = nn.row(i).dot(x.row(i) - v.row(i));
+        t(i) = nn.row(i).dot(x.row(i) - c.row(i));
+      }
+      double D = 0, T = 0, tr = 0, trk = 0;
+      edges([&](int i, int j) {
+        D += std::pow(a(i) - a(j), 2);
+        T += std::pow(t(i) - t(j), 2);
+        for (int k = 0; k < 3; ++k) tr += (z(i, k) - z(j, k)) * (az(i, k) - az(j, k)) / 3;
+        trk += 2;
+      });
+      const double sure = D + 2 * sigma * sigma * tr - sigma * sigma * trk;
+      const double gcv = D / std::pow(1 - tr / trk, 2);
+      NoiseAdaptiveSmoothingOptions os;
+      os.strength = s;
+      Positions full;
+      NoiseAdaptiveSmoothingReport r2;
+      noise_adaptive_smooth(noisy, f, os, full, r2, err);
+      Score sl = score((x * h).rowwise() + centre, clean, f), sf = score(full, clean, f);
+      std::printf("  s %4.2f  true %9.1f  SURE %9.1f GCV %9.1f | linear E_a %6.2f rms %5.1f | NAS E_a %6.2f rms %5.1f\n", s, T, sure, gcv,
+                  sl.ea, sl.rms, sf.ea, sf.rms);
+    }
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "a") {
     std::string err;
+    std::vector<double> strengths{1.0};
+    if (const char* list = std::getenv("LAB_STRENGTHS")) {  // e.g. LAB_STRENGTHS=0.5,1,2
+      strengths.clear();
+      for (const char* c = list; *c;) {
+        char* end;
+        strengths.push_back(std::strtod(c, &end));
+        c = *end ? end + 1 : end;
+      }
+    }
     for (double keep : {0.0})
-      for (double strength : {1.0}) {
+      for (double strength : strengths) {
         NoiseAdaptiveSmoothingOptions o;
         o.strength = strength;
+        o.select_cutoff = !std::getenv("LAB_NOSELECT");
         Positions out;
         NoiseAdaptiveSmoothingReport r;
         if (!noise_adaptive_smooth(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); return 1; }
         char name[64];
-        std::snprintf(name, sizeof name, "NAS s%.1f k%.1f (%.3f)", strength, keep, r.sigma_used);
+        std::snprintf(name, sizeof name, "NAS s%.2f mu %.3f%s (%.3f)", strength, r.mu, r.cutoff_selected ? "*" : "", r.sigma_used);
         show(name, out);
+        // how much was removed along the result's normals, against the noise estimate
+        const Positions nn = area_weighted_vertex_normals(out, f);
+        double normal2 = 0, all2 = 0;
+        for (int i = 0; i < n; ++i) {
+          const Eigen::RowVector3d d = noisy.row(i) - out.row(i);
+          normal2 += std::pow(d.dot(nn.row(i)), 2);
+          all2 += d.squaredNorm();
+        }
+        std::printf("      removed: normal %.3f  all %.3f (x sigma)\n", std::sqrt(normal2 / n) / (h * r.sigma_used),
+                    std::sqrt(all2 / n) / (h * r.sigma_used));
       }
     return 0;
   }

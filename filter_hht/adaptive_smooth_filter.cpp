@@ -13,8 +13,9 @@ namespace {
 
 void declare(const MeshDocument&, RichParameterList& p) {
   p.addParam(RichFloat("strength", 1.0f, "Strength",
-                       "Multiplies the smoothing the noise estimate calls for: 1 is the measured best on the "
-                       "evaluation corpus (docs/quality.md), above 1 smooths more, below 1 less (0.1 to 10)."));
+                       "Multiplies the smoothing the noise estimate and the cross-validation call for: 1 is the "
+                       "measured best on the evaluation corpus (docs/quality.md), above 1 smooths more, below 1 less "
+                       "(0.1 to 10)."));
   p.addParam(RichFloat("noisePercent", 0.0f, "Noise level (% of mean edge, 0 = estimate)",
                        "Standard deviation of the noise per coordinate in percent of the mean edge length. 0 "
                        "estimates it from the finest IMF of the one-ring height signal along a Hamiltonian cycle; "
@@ -49,6 +50,10 @@ bool apply(FilterRun& run) {
   else
     run.log(QString("Adaptive smooth: estimated noise sigma %1% of the mean edge length %2 (finest IMF, %3 samples)")
                 .arg(100 * report.sigma_used, 0, 'f', 1).arg(edge).arg(report.noise.samples));
+  if (report.selection_vertices > 0)
+    run.log(QString("  cut-off by cross-validation on %1 vertices (%2 conjugate gradient iterations): %3")
+                .arg(report.selection_vertices).arg(report.selection_iterations)
+                .arg(report.cutoff_selected ? "stronger than the noise level's" : "the noise level's kept"));
   run.log(QString("  cut-off mu %1 (strength %2), %3 conjugate gradient iterations; RMS vertex move %4, largest %5 "
                   "(x mean edge)")
               .arg(report.mu, 0, 'f', 3).arg(options.strength).arg(report.iterations)
@@ -64,7 +69,8 @@ FilterSpec adaptive_smooth_filter() {
           "Removes noise with a strength set by the noise itself: the noise level is estimated from the finest IMF "
           "of the one-ring height signal along a Hamiltonian cycle (Kopsinis and McLaughlin's EMD noise estimate), "
           "then the mesh is rebuilt by a least-squares solve that keeps mu^4 / (mu^4 + k^4) of each frequency k of the "
-          "uniform Laplacian, mu set by the noise, with tangential slides capped by the noise level. Not the paper's "
+          "uniform Laplacian, mu set by the noise or, where generalized cross-validation finds it better (a dense, "
+          "smooth surface), a stronger one, with tangential slides capped by the noise level. Not the paper's "
           "method (its curvature filter leaves stripes and keeps the noise's tangential part): see docs/quality.md "
           "for why and for how it compares with Taubin, HC Laplacian and TwoStep smoothing. A clean mesh is smoothed "
           "lightly; the connectivity is never changed.",

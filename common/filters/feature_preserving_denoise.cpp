@@ -178,7 +178,7 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
   if (options.untangle) {
     step(8, "Untangling: noise-adaptive smoothing");
     NoiseAdaptiveSmoothingOptions smoothing;
-    smoothing.noise = sigma;
+    smoothing.noise = sigma;  // the cut-off from the noise level (cross-validation not measured here)
     NoiseAdaptiveSmoothingReport smoothing_report;
     Positions smoothed;
     if (!noise_adaptive_smooth(positions, faces, smoothing, smoothed, smoothing_report, error,

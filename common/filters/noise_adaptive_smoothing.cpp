@@ -4,6 +4,7 @@
 #include "mesh/mesh_checks.h"
 #include "mesh/vertex_adjacency.h"
 #include "reconstruction/biharmonic_low_pass.h"
+#include "reconstruction/cutoff_selection.h"
 #include "mesh/vertex_normals.h"
 
 
@@ -52,6 +53,22 @@ int unfold(Positions& x, const Faces& faces, const VertexAdjacency& adjacency) {
   return static_cast<int>(std::count(moved.begin(), moved.end(), 1));
 }
 
+// Vertex normals averaged over a few rings: they only project the part the filter removes onto
+// the surface's normal, and the noisy mesh's own normals are too rough for that.
+Positions smoothed_vertex_normals(const Positions& x, const Faces& faces, const VertexAdjacency& adjacency) {
+  Positions normals = area_weighted_vertex_normals(x, faces), next(x.rows(), 3);
+  for (int sweep = 0; sweep < 3; ++sweep) {
+    for (Eigen::Index i = 0; i < x.rows(); ++i) {
+      Eigen::RowVector3d sum = normals.row(i);
+      for (const int* j = adjacency.begin(i); j != adjacency.end(i); ++j) sum += normals.row(*j);
+      const double length = sum.norm();
+      next.row(i) = length > 0 ? Eigen::RowVector3d(sum / length) : Eigen::RowVector3d::Zero();
+    }
+    normals.swap(next);
+  }
+  return normals;
+}
+
 }  // namespace
 
 bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const NoiseAdaptiveSmoothingOptions& options,
@@ -86,15 +103,37 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
     sigma = report.noise.relative();
   }
   report.sigma_used = sigma;
-  // A noise-free mesh gives sigma ~ 0: mu is then capped where the filter is the identity to
-  // well under a thousandth of an edge.
-  report.mu = options.mu > 0 ? options.mu : std::min(kMuScale / std::sqrt(options.strength * std::max(sigma, 1e-12)), 1e3);
-
-  step(30, "Least-squares smoothing");
   const Eigen::RowVector3d centre = positions.colwise().mean();
   const Positions v = (positions.rowwise() - centre) / edge;  // unit mean edge
   const VertexAdjacency adjacency = vertex_adjacency(faces, n);
   clock.done("adjacency");
+  // A noise-free mesh gives sigma ~ 0: mu is then capped where the filter is the identity to
+  // well under a thousandth of an edge.
+  const double noise_cutoff = std::min(kMuScale / std::sqrt(std::max(sigma, 1e-12)), 1e3);
+  report.mu = (options.mu > 0 ? options.mu : noise_cutoff) / std::sqrt(options.mu > 0 ? 1.0 : options.strength);
+  if (!(options.mu > 0) && options.select_cutoff && !(options.noise > 0)) {
+    // Cross-validation minimises a squared error, which large errors dominate, so on its own it
+    // smooths less than the mean angle error wants on coarse detailed meshes: it may only make the
+    // filter stronger than the noise level's (docs/quality.md). Its search starts a little weaker
+    // than that cut-off: nearer the identity its score falls again, spuriously (0/0 in the limit).
+    // It stops at kStrongestSelected times the noise level's cut-off: the solve's iterations grow
+    // as 1 / mu^2, and the angle error gains little beyond (docs/quality.md).
+    step(20, "Cut-off by cross-validation");
+    CutoffSelectionOptions search;
+    search.mu_largest = kWeakestSearched * noise_cutoff;
+    search.mu_smallest = noise_cutoff / kStrongestSelected;
+    CutoffSelection selection;
+    if (!select_cutoff(adjacency, v, smoothed_vertex_normals(v, faces, adjacency), search, selection, error,
+                       [&](double done) { step(20 + static_cast<int>(10 * done), "Cut-off by cross-validation"); }))
+      return false;
+    report.cutoff_selected = selection.mu < noise_cutoff;
+    report.mu = std::min(selection.mu, noise_cutoff) / std::sqrt(options.strength);
+    report.selection_iterations = selection.iterations;
+    report.selection_vertices = selection.sampled_vertices;
+    clock.done("cut-off selection");
+  }
+
+  step(30, "Least-squares smoothing");
   const double diagonal = bounding_box_diagonal(positions);
   Positions x;
   BiharmonicLowPassReport solve;

@@ -6,8 +6,10 @@
 //      uniform Laplacian (robust on slivers, and it pulls tangential noise out). Per eigenmode k
 //      of L the filter keeps mu^4 / (mu^4 + k^4), a second-order Butterworth low-pass: flatter in
 //      the pass band and steeper than Taubin's lambda|mu or the first-order ||L V~||^2 (both
-//      measured, docs/quality.md). mu = kMuScale / sqrt(strength * sigma), sigma in mean edges:
-//      more noise, lower cut-off.
+//      measured, docs/quality.md). The cut-off is the noise level's, mu = kMuScale / sqrt(strength
+//      * sigma), sigma in mean edges, or a stronger one where generalized cross-validation finds
+//      it better (cutoff_selection.h): the best cut-off depends on the surface as well as on the
+//      noise, and a dense smooth mesh takes a much stronger filter than a coarse detailed one.
 //   3. each vertex's move along its tangent plane is capped at kTangentialCap * sigma^2 mean
 //      edges: the uniform Laplacian also slides vertices of an irregular (clean) triangulation
 //      towards their neighbours' centroid, which is no noise; tangential noise is of the order
@@ -31,6 +33,10 @@ namespace hht {
 // corpus (docs/quality.md).
 constexpr double kMuScale = 0.233;
 constexpr double kTangentialCap = 7.0;
+// The weakest cut-off the cross-validation scores, relative to the noise level's (docs/quality.md).
+constexpr double kWeakestSearched = 1.5;
+// The strongest: the noise level's cut-off divided by this.
+constexpr double kStrongestSelected = 2.0;
 // The solve stops once no vertex can be further than this, relative to the bounding-box
 // diagonal, from the exact least-squares solution (a proven bound: biharmonic_low_pass.h).
 constexpr double kSmoothingMaxError = 1e-5;
@@ -39,6 +45,7 @@ struct NoiseAdaptiveSmoothingOptions {
   double noise = 0;            // sigma / mean edge length; 0 or less: estimated
   double strength = 1;         // > 1 smooths more, < 1 less
   double mu = 0;               // > 0: this cut-off instead of the one the noise sets (experiments)
+  bool select_cutoff = true;   // with the noise estimated: a stronger cut-off where cross-validation finds one
   CycleOptions cycle;
   EmdOptions emd;
 };
@@ -47,6 +54,9 @@ struct NoiseAdaptiveSmoothingReport {
   NoiseEstimate noise;         // as estimated (sigma 0 when `noise` was given)
   double sigma_used = 0;       // relative to the mean edge
   double mu = 0;
+  bool cutoff_selected = false;  // mu from cross-validation (stronger than the noise level's)
+  int selection_iterations = 0;  // conjugate gradient iterations of the selection's solves
+  int selection_vertices = 0;    // vertices it scored on (a sample of a large mesh)
   double max_displacement = 0;
   double rms_displacement = 0;
   int unfolded_vertices = 0;   // moved to their one-ring centroid to undo a fold

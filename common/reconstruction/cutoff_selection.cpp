@@ -1,0 +1,135 @@
+#include "reconstruction/cutoff_selection.h"
+
+#include "reconstruction/biharmonic_low_pass.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+namespace hht {
+
+namespace {
+
+// Breadth-first patches grown from seeds spread evenly over the vertex order, `budget` vertices
+// in all; `kept` lists the original indices of the sampled vertices.
+VertexAdjacency sampled_patches(const VertexAdjacency& adjacency, int budget, int patches, std::vector<int>& kept) {
+  const int n = adjacency.vertices();
+  std::vector<int> index(n, -1);
+  kept.clear();
+  const int per_patch = std::max(1, budget / patches);
+  for (int p = 0; p < patches; ++p) {
+    const int seed = static_cast<int>((static_cast<int64_t>(n) * p) / patches);
+    if (index[seed] >= 0) continue;
+    const size_t start = kept.size();
+    index[seed] = static_cast<int>(kept.size());
+    kept.push_back(seed);
+    for (size_t head = start; head < kept.size() && kept.size() - start < static_cast<size_t>(per_patch); ++head)
+      for (const int* j = adjacency.begin(kept[head]); j != adjacency.end(kept[head]); ++j)
+        if (index[*j] < 0 && kept.size() - start < static_cast<size_t>(per_patch)) {
+          index[*j] = static_cast<int>(kept.size());
+          kept.push_back(*j);
+        }
+  }
+  VertexAdjacency out;
+  out.offsets.assign(kept.size() + 1, 0);
+  out.boundary.assign(kept.size(), 0);
+  for (size_t i = 0; i < kept.size(); ++i) {
+    for (const int* j = adjacency.begin(kept[i]); j != adjacency.end(kept[i]); ++j)
+      if (index[*j] >= 0) out.neighbours.push_back(index[*j]);
+    std::sort(out.neighbours.begin() + out.offsets[i], out.neighbours.end());
+    out.offsets[i + 1] = static_cast<int>(out.neighbours.size());
+  }
+  return out;
+}
+
+Positions rows_of(const Positions& all, const std::vector<int>& kept) {
+  Positions out(kept.size(), 3);
+  for (size_t i = 0; i < kept.size(); ++i) out.row(i) = all.row(kept[i]);
+  return out;
+}
+
+}  // namespace
+
+bool select_cutoff(const VertexAdjacency& full_adjacency, const Positions& full_positions, const Positions& full_normals,
+                   const CutoffSelectionOptions& options, CutoffSelection& selection, std::string& error,
+                   const std::function<void(double)>& progress) {
+  selection = CutoffSelection{};
+  const bool sample = full_adjacency.vertices() > options.sample_vertices;
+  std::vector<int> kept;
+  const VertexAdjacency adjacency =
+      sample ? sampled_patches(full_adjacency, options.sample_vertices, options.patches, kept) : full_adjacency;
+  const Positions& v = sample ? rows_of(full_positions, kept) : full_positions;
+  const Positions& normals = sample ? rows_of(full_normals, kept) : full_normals;
+  const int n = adjacency.vertices();
+  selection.sampled_vertices = n;
+
+  // Three Rademacher probes, fixed (a deterministic generator: the same choice on every run).
+  Positions probes(n, 3);
+  uint64_t state = 0x9E3779B97F4A7C15ull;
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < 3; ++k) {
+      state = state * 6364136223846793005ull + 1442695040888963407ull;
+      probes(i, k) = (state >> 63) ? 1.0 : -1.0;
+    }
+  double trace_k = 0;
+  for (int i = 0; i < n; ++i) trace_k += adjacency.valence(i);
+  if (!(trace_k > 0)) {
+    error = "no edge to choose the cut-off on";
+    return false;
+  }
+
+  auto score = [&](double mu, double& g) {
+    Positions x, a;
+    BiharmonicLowPassReport report;
+    if (!biharmonic_low_pass(adjacency, v, mu, options.max_error, x, report)) return false;
+    selection.iterations += report.iterations;
+    if (!biharmonic_low_pass(adjacency, probes, mu, options.max_error, a, report)) return false;
+    selection.iterations += report.iterations;
+    Eigen::VectorXd removed(n);
+    for (int i = 0; i < n; ++i) removed[i] = normals.row(i).dot(x.row(i) - v.row(i));
+    double d = 0, trace_ka = 0;
+    for (int i = 0; i < n; ++i)
+      for (const int* j = adjacency.begin(i); j != adjacency.end(i); ++j) {
+        if (*j < i) continue;
+        d += std::pow(removed[i] - removed[*j], 2);
+        trace_ka += (probes.row(i) - probes.row(*j)).dot(a.row(i) - a.row(*j)) / 3;
+      }
+    const double kept_fraction = 1 - trace_ka / trace_k;
+    g = kept_fraction > 0 ? d / (kept_fraction * kept_fraction) : HUGE_VAL;
+    return true;
+  };
+
+  const int grid = 1 + static_cast<int>(std::floor(std::log(options.mu_largest / options.mu_smallest) / std::log(options.step)));
+  int best = 0, rises = 0;
+  for (int k = 0; k < grid && rises < 2; ++k) {
+    const double mu = options.mu_largest / std::pow(options.step, k);
+    double g;
+    if (!score(mu, g)) {
+      error = "the cut-off selection's solve did not converge";
+      return false;
+    }
+    selection.curve.push_back({mu, g});
+    if (g < selection.curve[best].score) {
+      best = k;
+      rises = 0;
+    } else if (k > best) {
+      ++rises;
+    }
+    if (progress) progress(static_cast<double>(k + 1) / grid);
+  }
+  selection.mu = selection.curve[best].mu;
+  // Parabola through the minimum and its two neighbours, in log mu (uniform spacing there).
+  if (best > 0 && best + 1 < static_cast<int>(selection.curve.size())) {
+    const double left = selection.curve[best - 1].score, mid = selection.curve[best].score,
+                 right = selection.curve[best + 1].score;
+    const double curvature = left - 2 * mid + right;
+    if (curvature > 0) {
+      const double offset = std::clamp(0.5 * (left - right) / curvature, -0.5, 0.5);  // in grid steps, + = smaller mu
+      selection.mu *= std::pow(options.step, -offset);
+    }
+  }
+  return true;
+}
+
+}  // namespace hht
