@@ -19,6 +19,8 @@
 
 #include <cstdio>
 #include <random>
+#include <map>
+#include <algorithm>
 
 using namespace hht;
 
@@ -447,6 +449,29 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "h") {  // dihedral angles of the adaptive smoothing's result
+    std::string err;
+    NoiseAdaptiveSmoothingOptions o;
+    Positions out;
+    NoiseAdaptiveSmoothingReport r;
+    if (!noise_adaptive_smooth(noisy, f, o, out, r, err)) return 1;
+    const Positions fn = face_normals(out, f);
+    std::map<std::pair<int, int>, int> first;
+    std::vector<double> angles;
+    for (Eigen::Index i = 0; i < f.rows(); ++i)
+      for (int k = 0; k < 3; ++k) {
+        const int a = f(i, k), b = f(i, (k + 1) % 3);
+        const auto key = std::minmax(a, b);
+        auto it = first.find(key);
+        if (it == first.end()) first[key] = static_cast<int>(i);
+        else angles.push_back(std::acos(std::clamp(fn.row(i).dot(fn.row(it->second)), -1.0, 1.0)) * 180 / M_PI);
+      }
+    std::sort(angles.begin(), angles.end());
+    auto q = [&](double p) { return angles[static_cast<size_t>(p * (angles.size() - 1))]; };
+    std::printf("  dihedral q25 %.2f median %.2f q90 %.2f q98 %.2f  ratio98/50 %.2f  under1deg %.3f\n", q(0.25), q(0.5), q(0.9), q(0.98),
+                q(0.98) / q(0.5), double(std::lower_bound(angles.begin(), angles.end(), 1.0) - angles.begin()) / angles.size());
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "a") {
     std::string err;
     std::vector<double> strengths{1.0};
@@ -526,6 +551,7 @@ int main(int argc, char** argv) {
       for (int it = 0; it < 20; ++it, mu /= 1.15) {
         o.mu = mu;
         o.noise = sig;
+        o.select_cutoff = false;
         noise_adaptive_smooth(noisy, f, o, out, r, err);
         MeanCurvature mc;
         mean_curvature(out, f, mc, err);

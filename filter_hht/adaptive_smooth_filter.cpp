@@ -32,6 +32,7 @@ bool apply(FilterRun& run) {
   hht::NoiseAdaptiveSmoothingOptions options;
   options.strength = par.getFloat("strength");
   options.noise = par.getFloat("noisePercent") / 100.0;
+  options.select_cutoff = !(options.noise > 0);  // a given noise level sets the cut-off alone
   options.cycle = cycle_options(par);
   options.emd = emd_options(par);
   if (!check_range("the strength", options.strength, 0.1, 10, run.error) ||

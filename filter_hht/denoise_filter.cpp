@@ -168,7 +168,13 @@ bool apply(FilterRun& run) {
                 .arg(report.lines_by_emd).arg(report.lines - report.lines_by_emd).arg(o.cutoff).arg(o.cycles)
                 .arg(report.imfs.size()).arg(o.reconstruction.lambda).arg(report.reconstruction.iterations));
   }
-  if (report.refine_normal_passes > 0 && o.refine_vertex_iterations > 0)
+  if (report.crease_contrast > 0)
+    run.log(QString("  crease contrast of the smoothed mesh %1 (below %2: no sharp creases)%3")
+                .arg(report.crease_contrast, 0, 'f', 1).arg(hht::kCreaseContrast)
+                .arg(report.smoothed_instead ? "; the result is the adaptive smoothing (cross-validated cut-off)" : ""));
+  if (report.smoothed_instead)
+    run.log("  no refinement (the surface has no sharp creases)");
+  else if (report.refine_normal_passes > 0 && o.refine_vertex_iterations > 0)
     run.log(QString("  refinement: %1 round(s) of %2 guided normal filtering passes and %3 vertex update iterations")
                 .arg(report.refine_rounds).arg(report.refine_normal_passes).arg(o.refine_vertex_iterations));
   else

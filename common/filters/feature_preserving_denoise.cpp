@@ -1,5 +1,7 @@
 #include "filters/feature_preserving_denoise.h"
 
+#include "mesh/crease_contrast.h"
+
 #include "mesh/mesh_checks.h"
 #include "evaluation/gaussian_noise.h"
 #include "filters/guided_normal_denoise.h"
@@ -175,10 +177,12 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
   }
 
   Positions start = positions;
-  if (options.untangle) {
+  const bool route = options.smooth_surfaces_by_smoothing && !options.paper_stage;
+  if (options.untangle || route) {
     step(8, "Untangling: noise-adaptive smoothing");
     NoiseAdaptiveSmoothingOptions smoothing;
-    smoothing.noise = sigma;  // the cut-off from the noise level (cross-validation not measured here)
+    smoothing.noise = sigma;
+    smoothing.select_cutoff = false;  // the noise level's cut-off: the refinement was measured from it
     NoiseAdaptiveSmoothingReport smoothing_report;
     Positions smoothed;
     if (!noise_adaptive_smooth(positions, faces, smoothing, smoothed, smoothing_report, error,
@@ -191,9 +195,23 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
       };
       report.flipped_faces += normal(positions).dot(normal(smoothed)) < 0;
     }
-    report.untangled = report.flipped_faces > kTangledShare * static_cast<double>(faces.rows());
+    report.untangled = options.untangle && report.flipped_faces > kTangledShare * static_cast<double>(faces.rows());
     if (report.untangled) start = smoothed;
     clock.done("untangling");
+    // A surface without sharp creases (organic): the guided refinement, made for creases, would
+    // facet it; the adaptive smoothing with its cross-validated cut-off is the better result.
+    report.crease_contrast = crease_contrast(smoothed, faces);
+    if (route && report.crease_contrast < kCreaseContrast) {
+      step(40, "No sharp creases: adaptive smoothing");
+      smoothing.select_cutoff = true;
+      if (!noise_adaptive_smooth(positions, faces, smoothing, result, smoothing_report, error,
+                                 [&](int percent, const char*) { step(40 + 59 * percent / 100, "No sharp creases: adaptive smoothing"); }))
+        return false;
+      report.smoothed_instead = true;
+      clock.done("adaptive smoothing");
+      step(100, "Done");
+      return true;
+    }
   }
 
   result = start;

@@ -19,6 +19,9 @@
 //    vertices fitted to them (Sun et al. 2007), in rounds whose number the noise sets (below
 //    5% of the mean edge, one round of fewer passes)
 //    (guided_normal_denoise.h);
+//  - surfaces without sharp creases (crease_contrast.h of the smoothed mesh below kCreaseContrast)
+//    get the adaptive smoothing, cross-validated cut-off, as the result instead: the refinement
+//    facets them;
 //  - the paper's HHT stage above is off by default (paper_stage): measured, it makes the result
 //    worse than the refinement alone on most cases (docs/quality.md).
 #pragma once
@@ -41,10 +44,17 @@ constexpr double kNoisePerRound = 0.1;
 // larger move is scaled down to it.
 constexpr double kRefineMoveToNoise = 0.75;
 
+// Below this crease contrast (crease_contrast.h) of the noise-level smoothing, the surface has no
+// sharp creases and the result is the adaptive smoothing (cross-validated cut-off) instead of the
+// refinement: on the corpus organic meshes read 5-9, CAD parts with creases 9.5-22 (docs/quality.md).
+constexpr double kCreaseContrast = 9.0;
+
 struct DenoiseOptions {
   bool paper_stage = false;     // the paper's divide-and-conquer HHT stage before the refinement
   double noise = 0;             // sigma / mean edge length; 0 or less: estimated
   bool untangle = true;         // start from the noise-adaptive smoothing when the input is tangled
+  bool smooth_surfaces_by_smoothing = true;  // no sharp creases (kCreaseContrast): the adaptive smoothing
+                                             // (not with the paper's stage: that asks for the paper's method)
   bool detect_features = true;  // false: the torus-like case, no feature separation (Fig. 8)
   SharpFeatureOptions features;
   CycleOptions cycle;
@@ -68,6 +78,8 @@ struct DenoiseReport {
   double sigma_used = 0;       // relative to the mean edge
   bool untangled = false;      // started from the noise-adaptive smoothing
   int flipped_faces = 0;       // input faces flipped against that smoothing
+  double crease_contrast = 0;  // of that smoothing (0: not measured)
+  bool smoothed_instead = false;  // no sharp creases: the result is the adaptive smoothing
   int refine_rounds = 0;
   int refine_normal_passes = 0;  // per round, as used
   double refine_scaled = 1;      // < 1: the refinement's move was scaled down to the noise's RMS

@@ -111,7 +111,7 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
   // well under a thousandth of an edge.
   const double noise_cutoff = std::min(kMuScale / std::sqrt(std::max(sigma, 1e-12)), 1e3);
   report.mu = (options.mu > 0 ? options.mu : noise_cutoff) / std::sqrt(options.mu > 0 ? 1.0 : options.strength);
-  if (!(options.mu > 0) && options.select_cutoff && !(options.noise > 0)) {
+  if (!(options.mu > 0) && options.select_cutoff) {
     // Cross-validation minimises a squared error, which large errors dominate, so on its own it
     // smooths less than the mean angle error wants on coarse detailed meshes: it may only make the
     // filter stronger than the noise level's (docs/quality.md). Its search starts a little weaker

@@ -9,7 +9,8 @@
 //      measured, docs/quality.md). The cut-off is the noise level's, mu = kMuScale / sqrt(strength
 //      * sigma), sigma in mean edges, or a stronger one where generalized cross-validation finds
 //      it better (cutoff_selection.h): the best cut-off depends on the surface as well as on the
-//      noise, and a dense smooth mesh takes a much stronger filter than a coarse detailed one.
+//      noise, and a dense smooth mesh takes a much stronger filter than a coarse detailed one
+//      (select_cutoff; the filter turns it off when the user gives the noise level).
 //   3. each vertex's move along its tangent plane is capped at kTangentialCap * sigma^2 mean
 //      edges: the uniform Laplacian also slides vertices of an irregular (clean) triangulation
 //      towards their neighbours' centroid, which is no noise; tangential noise is of the order
@@ -45,7 +46,7 @@ struct NoiseAdaptiveSmoothingOptions {
   double noise = 0;            // sigma / mean edge length; 0 or less: estimated
   double strength = 1;         // > 1 smooths more, < 1 less
   double mu = 0;               // > 0: this cut-off instead of the one the noise sets (experiments)
-  bool select_cutoff = true;   // with the noise estimated: a stronger cut-off where cross-validation finds one
+  bool select_cutoff = true;   // a stronger cut-off than the noise level's where cross-validation finds one
   CycleOptions cycle;
   EmdOptions emd;
 };

@@ -57,6 +57,7 @@ TEST(NoiseAdaptiveSmoothing, SolvesTheDocumentedSystem) {
   const Positions noisy = add_gaussian_noise(s.positions, s.faces, 20, NoiseDirection::Isotropic, 5);
   NoiseAdaptiveSmoothingOptions o;
   o.noise = 3.0;
+  o.select_cutoff = false;
   NoiseAdaptiveSmoothingReport report;
   const Positions ours = smooth(noisy, s.faces, o, &report);
   EXPECT_NEAR(report.mu, kMuScale / std::sqrt(3.0), 1e-12);
@@ -114,6 +115,7 @@ TEST(NoiseAdaptiveSmoothing, StrengthAndGivenNoiseAreObeyed) {
   NoiseAdaptiveSmoothingOptions strong, given;
   strong.strength = 3;
   given.noise = 0.4;
+  given.select_cutoff = false;
   NoiseAdaptiveSmoothingReport base, a, b;
   smooth(noisy, s.faces, {}, &base);
   smooth(noisy, s.faces, strong, &a);
