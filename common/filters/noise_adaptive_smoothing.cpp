@@ -15,17 +15,6 @@ namespace hht {
 
 namespace {
 
-Positions face_normals(const Positions& p, const Faces& faces) {
-  Positions out(faces.rows(), 3);
-  for (Eigen::Index f = 0; f < faces.rows(); ++f) {
-    const Eigen::RowVector3d a = p.row(faces(f, 0));
-    const Eigen::RowVector3d c = (p.row(faces(f, 1)) - a).cross(p.row(faces(f, 2)) - a);
-    const double length = c.norm();
-    out.row(f) = length > 0 ? Eigen::RowVector3d(c / length) : Eigen::RowVector3d::Zero();
-  }
-  return out;
-}
-
 // Faces pointing away from the surface around them (their normal against the mean of their
 // vertices' normals) are folds, left where a sliver's vertices slid past each other: their
 // vertices are moved to their one-ring centroids until none is left (a few passes at most).
@@ -33,7 +22,7 @@ int unfold(Positions& x, const Faces& faces, const VertexAdjacency& adjacency) {
   std::vector<unsigned char> moved(x.rows(), 0);
   for (int pass = 0; pass < 10; ++pass) {
     const Positions vertex_normals = area_weighted_vertex_normals(x, faces);
-    const Positions normals = face_normals(x, faces);
+    const Positions normals = unit_face_normals(x, faces);
     std::vector<int> folded;
     for (Eigen::Index f = 0; f < faces.rows(); ++f) {
       const Eigen::RowVector3d around =
@@ -159,9 +148,9 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
     const double length = tangential.norm();
     if (length > cap) x.row(i) -= tangential * (1 - cap / length);
   }
-  const Positions smooth_normals = face_normals(uncapped, faces);
+  const Positions smooth_normals = unit_face_normals(uncapped, faces);
   for (int pass = 0; pass < 3; ++pass) {
-    const Positions capped_normals = face_normals(x, faces);
+    const Positions capped_normals = unit_face_normals(x, faces);
     bool changed = false;
     for (Eigen::Index f = 0; f < faces.rows(); ++f) {
       if (capped_normals.row(f).dot(smooth_normals.row(f)) >= 0.5) continue;

@@ -1,5 +1,7 @@
 #include "mesh/crease_contrast.h"
 
+#include "mesh/vertex_normals.h"
+
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
@@ -12,13 +14,7 @@ constexpr double kFlat = 0.01;  // radians (0.57 degrees); the corpus's smoothed
 }  // namespace
 
 double crease_contrast(const Positions& positions, const Faces& faces) {
-  Positions normals(faces.rows(), 3);
-  for (Eigen::Index f = 0; f < faces.rows(); ++f) {
-    const Eigen::RowVector3d a = positions.row(faces(f, 0));
-    const Eigen::RowVector3d c = (positions.row(faces(f, 1)) - a).cross(positions.row(faces(f, 2)) - a);
-    const double length = c.norm();
-    normals.row(f) = length > 0 ? Eigen::RowVector3d(c / length) : Eigen::RowVector3d::Zero();
-  }
+  const Positions normals = unit_face_normals(positions, faces);
   std::unordered_map<uint64_t, Eigen::Index> first_face;
   first_face.reserve(static_cast<size_t>(faces.rows()) * 3 / 2);
   std::vector<double> angles;

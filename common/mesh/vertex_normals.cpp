@@ -16,4 +16,15 @@ Positions area_weighted_vertex_normals(const Positions& positions, const Faces& 
   return normals;
 }
 
+Positions unit_face_normals(const Positions& positions, const Faces& faces) {
+  Positions normals(faces.rows(), 3);
+  for (Eigen::Index f = 0; f < faces.rows(); ++f) {
+    const Eigen::RowVector3d a = positions.row(faces(f, 0));
+    const Eigen::RowVector3d c = (positions.row(faces(f, 1)) - a).cross(positions.row(faces(f, 2)) - a);
+    const double length = c.norm();
+    normals.row(f) = length > 0 ? Eigen::RowVector3d(c / length) : Eigen::RowVector3d::Zero();
+  }
+  return normals;
+}
+
 }  // namespace hht

@@ -8,4 +8,7 @@ namespace hht {
 
 Positions area_weighted_vertex_normals(const Positions& positions, const Faces& faces);
 
+// Per-face unit normals by the winding; zero for zero-area faces.
+Positions unit_face_normals(const Positions& positions, const Faces& faces);
+
 }  // namespace hht
