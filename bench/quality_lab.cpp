@@ -483,7 +483,6 @@ int main(int argc, char** argv) {
         c = *end ? end + 1 : end;
       }
     }
-    for (double keep : {0.0})
       for (double strength : strengths) {
         NoiseAdaptiveSmoothingOptions o;
         o.strength = strength;
