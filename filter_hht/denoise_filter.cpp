@@ -31,6 +31,11 @@ void declare(const MeshDocument&, RichParameterList& p) {
                       "Noise with a tangential part (a scanner's) folds small triangles over, which no normal filter "
                       "repairs. When more than 0.75% of the faces point away from those of the noise-adaptive "
                       "smoothing (HHT: Adaptive Smooth), the denoiser starts from that smoothing."));
+  p.addParam(RichBool("smoothCreaseless", d.smooth_surfaces_by_smoothing, "Smooth surfaces without sharp creases",
+                      "When the smoothed mesh shows no sharp creases (the 98th percentile of its dihedral angles under "
+                      "9 times their median: organic models), the result is HHT: Adaptive Smooth's instead of the "
+                      "refinement, which would facet it. Turn off to force the refinement, e.g. on a CAD part with "
+                      "rounded edges. Ignored with the paper's stage on."));
   p.addParam(RichInt("refineRounds", d.refine_rounds, "Refinement rounds (0 = by the noise)",
                      "Rounds of guided normal filtering and vertex update (0 to 100); 0 takes one per 10% of noise "
                      "(below 5%, one round of proportionally fewer passes, so a clean mesh is barely touched)."));
@@ -108,6 +113,7 @@ bool apply(FilterRun& run) {
   hht::DenoiseOptions o;
   o.noise = par.getFloat("noisePercent") / 100.0;
   o.untangle = par.getBool("untangle");
+  o.smooth_surfaces_by_smoothing = par.getBool("smoothCreaseless");
   o.paper_stage = par.getBool("paperStage");
   o.refine_rounds = par.getInt("refineRounds");
   if (!check_range("the noise level (% of the mean edge)", 100 * o.noise, 0, 1000, run.error) ||

@@ -99,7 +99,7 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
   // A noise-free mesh gives sigma ~ 0: mu is then capped where the filter is the identity to
   // well under a thousandth of an edge.
   const double noise_cutoff = std::min(kMuScale / std::sqrt(std::max(sigma, 1e-12)), 1e3);
-  report.mu = (options.mu > 0 ? options.mu : noise_cutoff) / std::sqrt(options.mu > 0 ? 1.0 : options.strength);
+  report.mu = options.mu > 0 ? options.mu : noise_cutoff / std::sqrt(options.strength);
   if (!(options.mu > 0) && options.select_cutoff) {
     // Cross-validation minimises a squared error, which large errors dominate, so on its own it
     // smooths less than the mean angle error wants on coarse detailed meshes: it may only make the

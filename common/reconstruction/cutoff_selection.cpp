@@ -57,10 +57,16 @@ bool select_cutoff(const VertexAdjacency& full_adjacency, const Positions& full_
   selection = CutoffSelection{};
   const bool sample = full_adjacency.vertices() > options.sample_vertices;
   std::vector<int> kept;
-  const VertexAdjacency adjacency =
-      sample ? sampled_patches(full_adjacency, options.sample_vertices, options.patches, kept) : full_adjacency;
-  const Positions& v = sample ? rows_of(full_positions, kept) : full_positions;
-  const Positions& normals = sample ? rows_of(full_normals, kept) : full_normals;
+  VertexAdjacency sampled_adjacency;
+  Positions sampled_positions, sampled_normals;
+  if (sample) {
+    sampled_adjacency = sampled_patches(full_adjacency, options.sample_vertices, options.patches, kept);
+    sampled_positions = rows_of(full_positions, kept);
+    sampled_normals = rows_of(full_normals, kept);
+  }
+  const VertexAdjacency& adjacency = sample ? sampled_adjacency : full_adjacency;
+  const Positions& v = sample ? sampled_positions : full_positions;
+  const Positions& normals = sample ? sampled_normals : full_normals;
   const int n = adjacency.vertices();
   selection.sampled_vertices = n;
 

@@ -443,6 +443,33 @@ TEST(MeshlabserverParameters, DenoiseOptions) {
   }
 }
 
+// An organic mesh has no sharp creases: by default denoise.mlx gives the adaptive smoothing, and
+// smoothCreaseless false forces the refinement; both saved meshes are the library's, and the log
+// says which ran.
+TEST(MeshlabserverParameters, DenoiseSmoothsSurfacesWithoutCreases) {
+  const Input in = read_input("elephant");
+  const Positions noisy = add_gaussian_noise(in.positions, in.faces, 20.0, NoiseDirection::Isotropic, 6).cast<float>().cast<double>();
+  TriMesh m;
+  ASSERT_EQ(vcg::tri::io::ImporterOFF<TriMesh>::Open(m, data_mesh("elephant").c_str()), 0);
+  for (int v = 0; v < m.vn; ++v) m.vert[v].P() = vcg::Point3d(noisy(v, 0), noisy(v, 1), noisy(v, 2));
+  const std::string input = output_path("elephant_noisy.ply");
+  ASSERT_EQ(vcg::tri::io::ExporterPLY<TriMesh>::Save(m, input.c_str(), 0, true), 0);
+  for (const bool smooth : {true, false}) {
+    DenoiseOptions o;
+    o.smooth_surfaces_by_smoothing = smooth;
+    Positions expected;
+    DenoiseReport report;
+    std::string error;
+    ASSERT_TRUE(feature_preserving_denoise(noisy, in.faces, o, expected, report, error)) << error;
+    EXPECT_EQ(report.smoothed_instead, smooth);
+    const ServerRun run = run_resource(input, "denoise.mlx", {{"smoothCreaseless", smooth ? "true" : "false"}},
+                                       smooth ? "denoise_creaseless" : "denoise_forced_refinement");
+    expect_positions(saved_positions(run), expected, in.diagonal, smooth ? "smoothed" : "refined");
+    EXPECT_EQ(run.log.find("the result is the adaptive smoothing") != std::string::npos, smooth) << run.log;
+    EXPECT_EQ(run.log.find("refinement: ") != std::string::npos, !smooth) << run.log;
+  }
+}
+
 // ------------------------------------------------------------------------------ compare
 
 TEST(MeshlabserverParameters, CompareTwoDifferentMeshesEveryOutput) {
