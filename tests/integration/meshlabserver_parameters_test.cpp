@@ -373,15 +373,23 @@ TEST(MeshlabserverParameters, BilateralSigmasAndPasses) {
 
 // ------------------------------------------------------------------------------ denoise
 
+// A noisy copy of a data mesh, written as a PLY the way MeshLab will read it (float positions):
+// `noisy` holds those positions, `path` the file.
+void write_noisy(const std::string& name, const Input& in, double percent, NoiseDirection direction, unsigned seed,
+                 Positions& noisy, std::string& path) {
+  noisy = add_gaussian_noise(in.positions, in.faces, percent, direction, seed).cast<float>().cast<double>();
+  TriMesh m;
+  ASSERT_EQ(vcg::tri::io::ImporterOFF<TriMesh>::Open(m, data_mesh(name).c_str()), 0);
+  for (int v = 0; v < m.vn; ++v) m.vert[v].P() = vcg::Point3d(noisy(v, 0), noisy(v, 1), noisy(v, 2));
+  path = output_path(name + "_noisy.ply");
+  ASSERT_EQ(vcg::tri::io::ExporterPLY<TriMesh>::Save(m, path.c_str(), 0, true), 0);
+}
+
 TEST(MeshlabserverParameters, DenoiseOptions) {
   const Input in = read_input("fandisk");
-  // a noisy input, written as MeshLab will read it
-  const Positions noisy = add_gaussian_noise(in.positions, in.faces, 5.0, NoiseDirection::Random, 2).cast<float>().cast<double>();
-  TriMesh m;
-  ASSERT_EQ(vcg::tri::io::ImporterOFF<TriMesh>::Open(m, data_mesh("fandisk").c_str()), 0);
-  for (int v = 0; v < m.vn; ++v) m.vert[v].P() = vcg::Point3d(noisy(v, 0), noisy(v, 1), noisy(v, 2));
-  const std::string input = output_path("fandisk_noisy.ply");
-  ASSERT_EQ(vcg::tri::io::ExporterPLY<TriMesh>::Save(m, input.c_str(), 0, true), 0);
+  Positions noisy;
+  std::string input;
+  ASSERT_NO_FATAL_FAILURE(write_noisy("fandisk", in, 5.0, NoiseDirection::Random, 2, noisy, input));
   struct Case {
     std::string tag;
     std::vector<std::pair<std::string, std::string>> overrides;
@@ -448,12 +456,9 @@ TEST(MeshlabserverParameters, DenoiseOptions) {
 // says which ran.
 TEST(MeshlabserverParameters, DenoiseSmoothsSurfacesWithoutCreases) {
   const Input in = read_input("elephant");
-  const Positions noisy = add_gaussian_noise(in.positions, in.faces, 20.0, NoiseDirection::Isotropic, 6).cast<float>().cast<double>();
-  TriMesh m;
-  ASSERT_EQ(vcg::tri::io::ImporterOFF<TriMesh>::Open(m, data_mesh("elephant").c_str()), 0);
-  for (int v = 0; v < m.vn; ++v) m.vert[v].P() = vcg::Point3d(noisy(v, 0), noisy(v, 1), noisy(v, 2));
-  const std::string input = output_path("elephant_noisy.ply");
-  ASSERT_EQ(vcg::tri::io::ExporterPLY<TriMesh>::Save(m, input.c_str(), 0, true), 0);
+  Positions noisy;
+  std::string input;
+  ASSERT_NO_FATAL_FAILURE(write_noisy("elephant", in, 20.0, NoiseDirection::Isotropic, 6, noisy, input));
   for (const bool smooth : {true, false}) {
     DenoiseOptions o;
     o.smooth_surfaces_by_smoothing = smooth;
