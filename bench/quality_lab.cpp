@@ -472,6 +472,78 @@ int main(int argc, char** argv) {
                 q(0.98) / q(0.5), double(std::lower_bound(angles.begin(), angles.end(), 1.0) - angles.begin()) / angles.size());
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "z") {  // where the smoothing's vertex error lives
+    std::string err;
+    NoiseAdaptiveSmoothingOptions o;
+    Positions out;
+    NoiseAdaptiveSmoothingReport r;
+    if (!noise_adaptive_smooth(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); return 1; }
+    show("NAS", out);
+    {
+      const Positions on = area_weighted_vertex_normals(out, f);
+      const double cap = kTangentialCap * r.sigma_used * r.sigma_used * h;
+      int over = 0;
+      for (int i = 0; i < n; ++i) {
+        const Eigen::RowVector3d d = out.row(i) - noisy.row(i);
+        const Eigen::RowVector3d nn = on.row(i).normalized();
+        over += (d - d.dot(nn) * nn).norm() > 1.05 * cap;
+      }
+      std::printf("  unfolded %d  vertices sliding past the cap %d of %d  sigma %.3f mu %.3f\n", r.unfolded_vertices, over, n, r.sigma_used, r.mu);
+    }
+    std::map<std::pair<int, int>, int> edge_count;
+    for (Eigen::Index i = 0; i < f.rows(); ++i)
+      for (int k = 0; k < 3; ++k) {
+        int a = f(i, k), b = f(i, (k + 1) % 3);
+        edge_count[{std::min(a, b), std::max(a, b)}]++;
+      }
+    std::vector<int> ring(n, -1);  // rings from the boundary
+    std::vector<int> queue;
+    for (auto& e : edge_count)
+      if (e.second == 1) { ring[e.first.first] = 0; ring[e.first.second] = 0; }
+    for (int i = 0; i < n; ++i) if (ring[i] == 0) queue.push_back(i);
+    const VertexAdjacency adj = vertex_adjacency(f, n);
+    for (size_t q = 0; q < queue.size(); ++q)
+      for (const int* j = adj.begin(queue[q]); j != adj.end(queue[q]); ++j)
+        if (ring[*j] < 0) { ring[*j] = ring[queue[q]] + 1; queue.push_back(*j); }
+    const Positions cn = area_weighted_vertex_normals(clean, f);
+    const double diag = (clean.colwise().maxCoeff() - clean.colwise().minCoeff()).norm();
+    double sums[4][3] = {};  // ring 0, 1, 2-4, 5+: count, normal^2, tangential^2
+    for (int i = 0; i < n; ++i) {
+      const int b = ring[i] < 0 ? 3 : ring[i] == 0 ? 0 : ring[i] == 1 ? 1 : ring[i] <= 4 ? 2 : 3;
+      const Eigen::RowVector3d d = out.row(i) - clean.row(i);
+      const double dn = d.dot(cn.row(i).normalized());
+      sums[b][0] += 1; sums[b][1] += dn * dn; sums[b][2] += d.squaredNorm() - dn * dn;
+    }
+    {
+      std::vector<double> e2(n);
+      for (int i = 0; i < n; ++i) e2[i] = (out.row(i) - clean.row(i)).squaredNorm();
+      std::vector<double> sorted = e2;
+      std::sort(sorted.rbegin(), sorted.rend());
+      double total = 0, top1 = 0, top5 = 0, top20 = 0;
+      for (int i = 0; i < n; ++i) { total += sorted[i]; if (i < n / 100) top1 += sorted[i]; if (i < n / 20) top5 += sorted[i]; if (i < n / 5) top20 += sorted[i]; }
+      std::printf("  squared error share of the worst 1%% %.2f 5%% %.2f 20%% %.2f; largest error %.2f mean edges\n", top1 / total, top5 / total, top20 / total, std::sqrt(sorted[0]) / h);
+      std::vector<int> order(n);
+      for (int i = 0; i < n; ++i) order[i] = i;
+      std::sort(order.begin(), order.end(), [&](int a, int b) { return e2[a] > e2[b]; });
+      for (int k = 0; k < 5; ++k) {
+        const int i = order[k];
+        const Eigen::RowVector3d d = out.row(i) - clean.row(i), dn = noisy.row(i) - clean.row(i);
+        double local = 0, longest = 0;
+        for (const int* j = adj.begin(i); j != adj.end(i); ++j) { double l = (clean.row(*j) - clean.row(i)).norm() / h; local += l; longest = std::max(longest, l); }
+        std::printf("    v%d error %.2f (noise %.2f) valence %d normal part %.2f  local edge %.2f longest %.2f\n", i, d.norm() / h, dn.norm() / h, adj.valence(i), std::abs(d.dot(cn.row(i).normalized())) / h, local / adj.valence(i), longest);
+      }
+    }
+    const char* names[4] = {"boundary", "ring 1", "rings 2-4", "rings 5+"};
+    double total = 0;
+    for (auto& b : sums) total += b[1] + b[2];
+    for (int b = 0; b < 4; ++b) {
+      const double count = std::max(1.0, sums[b][0]);
+      std::printf("  %-10s %6d vertices  share of squared error: normal %.3f tangential %.3f  rms normal %.1f tangential %.1f\n",
+                  names[b], int(sums[b][0]), sums[b][1] / total, sums[b][2] / total, 1e4 * std::sqrt(sums[b][1] / count) / diag,
+                  1e4 * std::sqrt(sums[b][2] / count) / diag);
+    }
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "a") {
     std::string err;
     std::vector<double> strengths{1.0};

@@ -17,7 +17,12 @@
 //      of sigma, so light noise allows little sliding and heavy noise more; faces the cap would
 //      leave tilted by more than 60 degrees keep the uncapped slide (it untangles them);
 //   4. faces left folded against the surface around them get their vertices moved to their
-//      one-ring centroids.
+//      one-ring centroids;
+//   5. no vertex ends further than kMoveRadius * sigma * max(1, strength) mean edges from where
+//      it was: Gaussian noise moved it by more than 4 sigma with a probability of about 0.1%
+//      (3 degrees of freedom), while the uniform Laplacian moves a vertex with long edges (a
+//      CAD part's fans) by several mean edges (turbine at 10% noise: RMS vertex error 70.7 to
+//      22.8, in 1e-4 of the diagonal; ours, docs/quality.md).
 // Why not the paper's curvature filter for this: docs/quality.md (filtering along one cycle
 // leaves stripes, the keep-tangential target carries the input's noise into the result, and
 // the cotangent Laplacian breaks on slivers).
@@ -34,6 +39,8 @@ namespace hht {
 // corpus (docs/quality.md).
 constexpr double kMuScale = 0.233;
 constexpr double kTangentialCap = 7.0;
+// How far, in noise sigmas, the smoothing may move a vertex (times the strength above 1).
+constexpr double kMoveRadius = 4.0;
 // The weakest cut-off the cross-validation scores, relative to the noise level's (docs/quality.md).
 constexpr double kWeakestSearched = 1.5;
 // The strongest: the noise level's cut-off divided by this.
@@ -61,6 +68,7 @@ struct NoiseAdaptiveSmoothingReport {
   double max_displacement = 0;
   double rms_displacement = 0;
   int unfolded_vertices = 0;   // moved to their one-ring centroid to undo a fold
+  int held_vertices = 0;       // held at kMoveRadius noise sigmas from where they were
   int iterations = 0;          // conjugate gradient iterations of the solve
   double error_bound = 0;      // largest position error of the solve, at most, / bbox diagonal
   std::vector<StageTime> stages;
