@@ -481,6 +481,54 @@ int main(int argc, char** argv) {
                 q(0.98) / q(0.5), double(std::lower_bound(angles.begin(), angles.end(), 1.0) - angles.begin()) / angles.size());
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "v") {  // adaptive smoothing, then face normals averaged + vertex update
+    std::string err;
+    Positions nas;
+    NoiseAdaptiveSmoothingReport r;
+    noise_adaptive_smooth(noisy, f, NoiseAdaptiveSmoothingOptions{}, nas, r, err);
+    show("NAS", nas);
+    show("taubin10", taubin(noisy, f, 10, 0.5, -0.53));
+    // faces sharing a vertex
+    std::vector<std::vector<int>> vf(n);
+    for (Eigen::Index i = 0; i < f.rows(); ++i) for (int k = 0; k < 3; ++k) vf[f(i, k)].push_back(int(i));
+    for (double range : {0.0})
+      for (int passes : {1})
+        for (int iters : {1, 2, 3}) {
+          Positions fn = face_normals(nas, f);
+          Eigen::VectorXd area(f.rows());
+          for (Eigen::Index i = 0; i < f.rows(); ++i) {
+            Eigen::Vector3d a = nas.row(f(i, 0)), b = nas.row(f(i, 1)), c = nas.row(f(i, 2));
+            area[i] = 0.5 * (b - a).cross(c - a).norm();
+          }
+          for (int p = 0; p < passes; ++p) {
+            Positions next(f.rows(), 3);
+            for (Eigen::Index i = 0; i < f.rows(); ++i) {
+              Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
+              std::vector<int> seen;
+              for (int k = 0; k < 3; ++k) for (int g : vf[f(i, k)]) seen.push_back(g);
+              std::sort(seen.begin(), seen.end());
+              seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
+              for (int g : seen) {
+                double w = area[g];
+                if (range > 0) w *= std::exp(-(fn.row(i) - fn.row(g)).squaredNorm() / (2 * range * range));
+                sum += w * fn.row(g);
+              }
+              next.row(i) = sum.normalized();
+            }
+            fn = next;
+          }
+          Positions out = fit_vertices_to_normals(nas, f, fn, iters);
+          const double radius = kMoveRadius * r.sigma_used * h;
+          for (int i = 0; i < n; ++i) {
+            Eigen::RowVector3d d = out.row(i) - noisy.row(i);
+            if (d.norm() > radius) out.row(i) = noisy.row(i) + d * (radius / d.norm());
+          }
+          char name[64];
+          std::snprintf(name, sizeof name, "+ normals r%.1f p%d it%d", range, passes, iters);
+          show(name, out);
+        }
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "k") {  // normal error near and away from the clean creases
     std::string err;
     Positions nas, den;
