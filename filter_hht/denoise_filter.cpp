@@ -120,6 +120,8 @@ bool apply(FilterRun& run) {
       !check_range("refineRounds", o.refine_rounds, 0, 100, run.error))
     return false;
   o.detect_features = par.getBool("detectFeatures");
+  const int show = par.getEnum("showFeatures");
+  o.show_features = show != ShowNothing;
   o.features.angle_degrees = par.getFloat("featureAngle");
   o.features.filter_iterations = par.getInt("normalFilterIterations");
   o.cutoff = par.getFloat("cutoff");
@@ -146,7 +148,6 @@ bool apply(FilterRun& run) {
         return hht::feature_preserving_denoise(positions, faces, o, out, report, message, progress);
       }, run.error))
     return false;
-  const int show = par.getEnum("showFeatures");
   if (show == SelectFeatureVertices) {
     size_t i = 0;
     for (auto& v : model.cm.vert) {
@@ -165,7 +166,7 @@ bool apply(FilterRun& run) {
     run.log(QString("  untangling: %1 faces flipped against the noise-adaptive smoothing; %2")
                 .arg(report.flipped_faces)
                 .arg(report.untangled ? "started from that smoothing" : "started from the input"));
-  if (o.detect_features)
+  if (report.features_detected)
     run.log(QString("  features: %1 vertices, %2 feature lines, %3 corners")
                 .arg(report.feature_vertices).arg(report.lines).arg(report.corners));
   if (o.paper_stage) {

@@ -163,18 +163,21 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
   }
   report.sigma_used = sigma;
 
-  // Features of the input, for the paper's stage and for showing them.
+  // Features of the input, for the paper's stage and for showing them; nothing else needs them,
+  // and on a large mesh they cost as much as the smoothing (docs/benchmarks.md).
   report.type.assign(n, FeatureType::None);
-  if (options.detect_features) {
-    step(5, "Sharp feature detection");
+  auto detect_features = [&](int percent) {
+    step(percent, "Sharp feature detection");
     if (!detect_sharp_features(positions, faces, options.features, report.type, error)) return false;
     report.feature_lines = link_feature_lines(positions, faces, report.type);
     report.feature_vertices =
         static_cast<int>(std::count_if(report.type.begin(), report.type.end(), [](FeatureType t) { return t != FeatureType::None; }));
     report.lines = static_cast<int>(report.feature_lines.lines.size());
     report.corners = static_cast<int>(report.feature_lines.corners.size());
+    report.features_detected = true;
     clock.done("features");
-  }
+    return true;
+  };
 
   Positions start = positions;
   const bool route = options.smooth_surfaces_by_smoothing && !options.paper_stage;
@@ -209,11 +212,13 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
         return false;
       report.smoothed_instead = true;
       clock.done("adaptive smoothing");
+      if (options.detect_features && options.show_features && !detect_features(99)) return false;
       step(100, "Done");
       return true;
     }
   }
 
+  if (options.detect_features && (options.paper_stage || options.show_features) && !detect_features(31)) return false;
   result = start;
   if (options.paper_stage && !paper_stage(start, faces, options, result, report, clock, step, error)) return false;
 

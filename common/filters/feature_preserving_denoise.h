@@ -56,6 +56,8 @@ struct DenoiseOptions {
   bool smooth_surfaces_by_smoothing = true;  // no sharp creases (kCreaseContrast): the adaptive smoothing
                                              // (not with the paper's stage: that asks for the paper's method)
   bool detect_features = true;  // false: the torus-like case, no feature separation (Fig. 8)
+  bool show_features = false;   // detect them for the caller (report.type, feature_lines) even where
+                                // no stage uses them; otherwise only the paper's stage asks for them
   SharpFeatureOptions features;
   CycleOptions cycle;
   int cycles = 4;             // cycles whose filtered non-feature signals are averaged
@@ -83,6 +85,7 @@ struct DenoiseReport {
   int refine_rounds = 0;
   int refine_normal_passes = 0;  // per round, as used
   double refine_scaled = 1;      // < 1: the refinement's move was scaled down to the noise's RMS
+  bool features_detected = false;  // report.type and feature_lines hold the input's features
   int feature_vertices = 0;
   int corners = 0;
   int lines = 0;

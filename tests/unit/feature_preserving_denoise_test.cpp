@@ -26,8 +26,10 @@ Positions denoise(const Positions& p, const Faces& f, const DenoiseOptions& o, D
 TEST(FeaturePreservingDenoise, NoisyCubeGetsCloserToTheCube) {
   const test::ArrayMesh cube = test::load_data_mesh("cube-meshed");
   const Positions noisy = add_gaussian_noise(cube.positions, cube.faces, 10.0, NoiseDirection::Random, 12);
+  DenoiseOptions o;
+  o.show_features = true;
   DenoiseReport report;
-  const Positions result = denoise(noisy, cube.faces, {}, &report);
+  const Positions result = denoise(noisy, cube.faces, o, &report);
   const double before = mean_face_normal_error_degrees(noisy, cube.positions, cube.faces);
   const double after = mean_face_normal_error_degrees(result, cube.positions, cube.faces);
   EXPECT_LT(after, 0.7 * before) << "E_a " << before << " -> " << after;
@@ -36,6 +38,27 @@ TEST(FeaturePreservingDenoise, NoisyCubeGetsCloserToTheCube) {
   EXPECT_GE(report.lines, 12);
   EXPECT_GE(report.corners, 8);
   EXPECT_GT(report.feature_vertices, 0);
+}
+
+// Without the paper's stage nothing uses the features: they are detected only when the caller
+// asks to see them (on a large mesh they cost as much as the smoothing), and the result is the same.
+TEST(FeaturePreservingDenoise, FeaturesAreDetectedOnlyWhenUsedOrShown) {
+  const test::ArrayMesh cube = test::load_data_mesh("cube-meshed");
+  const test::ArrayMesh elephant = test::load_data_mesh("elephant");
+  for (const test::ArrayMesh* m : {&cube, &elephant}) {  // refined, and routed to the smoothing
+    const Positions noisy = add_gaussian_noise(m->positions, m->faces, 10.0, NoiseDirection::Isotropic, 12);
+    DenoiseReport quiet, shown;
+    const Positions plain = denoise(noisy, m->faces, {}, &quiet);
+    DenoiseOptions o;
+    o.show_features = true;
+    const Positions with_features = denoise(noisy, m->faces, o, &shown);
+    EXPECT_FALSE(quiet.features_detected);
+    EXPECT_EQ(quiet.feature_vertices, 0);
+    EXPECT_TRUE(shown.features_detected);
+    EXPECT_GT(shown.feature_vertices, 0);
+    EXPECT_EQ(quiet.smoothed_instead, m == &elephant);
+    EXPECT_EQ(plain, with_features);
+  }
 }
 
 TEST(FeaturePreservingDenoise, WithoutFeaturesOnASmoothTorus) {
@@ -52,8 +75,11 @@ TEST(FeaturePreservingDenoise, WithoutFeaturesOnASmoothTorus) {
 
 TEST(FeaturePreservingDenoise, FeatureVerticesAreTheDetectedOnes) {
   const test::ArrayMesh fandisk = test::load_data_mesh("fandisk");
+  DenoiseOptions o;
+  o.show_features = true;
   DenoiseReport report;
-  denoise(fandisk.positions, fandisk.faces, {}, &report);
+  denoise(fandisk.positions, fandisk.faces, o, &report);
+  EXPECT_TRUE(report.features_detected);
   int counted = 0;
   for (FeatureType t : report.type) counted += t != FeatureType::None;
   EXPECT_EQ(counted, report.feature_vertices);
