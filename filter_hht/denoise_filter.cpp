@@ -46,8 +46,9 @@ void declare(const MeshDocument&, RichParameterList& p) {
   p.addParam(RichInt("refineVertexIterations", d.refine_vertex_iterations, "Refinement: vertex update iterations",
                      "Iterations of the vertex update towards the filtered normals (Sun et al. 2007; 0 to 1000)."));
   p.addParam(RichBool("detectFeatures", d.detect_features, "Preserve sharp features",
-                      "Detect sharp features and process them as their own signals (CAD-like models). Off: no feature "
-                      "separation, for smooth models such as the paper's torus."));
+                      "Detect sharp features and process them as their own signals (CAD-like models) in the paper's "
+                      "stage; they are detected only for that stage or to show them. Off: no feature separation, for "
+                      "smooth models such as the paper's torus."));
   p.addParam(RichFloat("featureAngle", float(d.features.angle_degrees), "Feature angle (deg)",
                        "A crease is a feature when the (noise-filtered) normals of its two faces differ by more than "
                        "this angle (0 to 180): 90 on a cube edge, 0 on a plane. Lower it to catch weak creases."));
