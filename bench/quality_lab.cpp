@@ -488,12 +488,20 @@ int main(int argc, char** argv) {
     noise_adaptive_smooth(noisy, f, NoiseAdaptiveSmoothingOptions{}, nas, r, err);
     show("NAS", nas);
     show("taubin10", taubin(noisy, f, 10, 0.5, -0.53));
+    {
+      HamiltonianCycle c;
+      hamiltonian_cycle(f, n, CycleOptions{}, c, err);
+      NoiseEstimate after;
+      estimate_noise(nas, f, c, EmdOptions{}, after, err);
+      std::printf("  sigma %.3f, of the smoothing %.4f (ratio %.3f), mu %.3f%s\n", r.sigma_used, after.relative(), after.relative() / r.sigma_used,
+                  r.mu, r.cutoff_selected ? " selected" : "");
+    }
     // faces sharing a vertex
     std::vector<std::vector<int>> vf(n);
     for (Eigen::Index i = 0; i < f.rows(); ++i) for (int k = 0; k < 3; ++k) vf[f(i, k)].push_back(int(i));
     for (double range : {0.0})
       for (int passes : {1})
-        for (int iters : {1, 2, 3}) {
+        for (int iters : {2}) {
           Positions fn = face_normals(nas, f);
           Eigen::VectorXd area(f.rows());
           for (Eigen::Index i = 0; i < f.rows(); ++i) {
