@@ -537,6 +537,51 @@ int main(int argc, char** argv) {
         }
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "u") {  // put back faces the smoothing turned over, where that is consistent
+    std::string err;
+    Positions nas;
+    NoiseAdaptiveSmoothingReport r;
+    noise_adaptive_smooth(noisy, f, NoiseAdaptiveSmoothingOptions{}, nas, r, err);
+    show("NAS", nas);
+    std::vector<std::vector<int>> vf(n);
+    for (Eigen::Index i = 0; i < f.rows(); ++i) for (int k = 0; k < 3; ++k) vf[f(i, k)].push_back(int(i));
+    const Positions in_normals = face_normals(noisy, f);
+    const Positions in_vn = area_weighted_vertex_normals(noisy, f);
+    for (double limit_deg : {45.0, 60.0}) {
+      Positions out = nas;
+      const double limit = std::cos(limit_deg * M_PI / 180);
+      const Positions out_vn = area_weighted_vertex_normals(nas, f);  // the result's surface, kept fixed
+      auto corner_normal = [&](Eigen::Index i) {
+        return Eigen::RowVector3d(out_vn.row(f(i, 0)) + out_vn.row(f(i, 1)) + out_vn.row(f(i, 2))).normalized();
+      };
+      auto unit_normal = [&](const Positions& p, Eigen::Index i) {
+        Eigen::RowVector3d a = p.row(f(i, 0)), b = p.row(f(i, 1)), c = p.row(f(i, 2));
+        return Eigen::RowVector3d((b - a).cross(c - a).normalized());
+      };
+      int restored = 0;
+      for (int pass = 0; pass < 3; ++pass)
+      for (Eigen::Index i = 0; i < f.rows(); ++i) {
+        if (unit_normal(out, i).dot(in_normals.row(i)) >= 0) continue;
+        const Eigen::RowVector3d in_corners = (in_vn.row(f(i, 0)) + in_vn.row(f(i, 1)) + in_vn.row(f(i, 2))).normalized();
+        if (in_normals.row(i).dot(in_corners) < 0) continue;  // folded in the input: the smoothing rightly turned it
+        Positions trial = out;
+        for (int k = 0; k < 3; ++k) trial.row(f(i, k)) = noisy.row(f(i, k));
+        bool ok = true;
+        for (int k = 0; k < 3 && ok; ++k)
+          for (int g : vf[f(i, k)]) {
+            const double c = unit_normal(trial, g).dot(corner_normal(g));
+            if (g == i ? c < limit : c < 0) { ok = false; break; }
+          }
+        if (!ok) continue;
+        out = trial;
+        ++restored;
+      }
+      char name[64];
+      std::snprintf(name, sizeof name, "restore within %.0f (%d)", limit_deg, restored);
+      show(name, out);
+    }
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "k") {  // normal error near and away from the clean creases
     std::string err;
     Positions nas, den;

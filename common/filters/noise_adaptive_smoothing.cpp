@@ -5,6 +5,7 @@
 #include "mesh/vertex_adjacency.h"
 #include "reconstruction/biharmonic_low_pass.h"
 #include "reconstruction/cutoff_selection.h"
+#include "reconstruction/flip_guard.h"
 #include "mesh/vertex_normals.h"
 
 
@@ -180,6 +181,7 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
   step(92, "Tangential cap and unfolding");
   report.unfolded_vertices = unfold(x, faces, adjacency);
   report.held_vertices = hold_within_noise(x, v, kMoveRadius * sigma * std::max(1.0, options.strength));
+  report.restored_faces = restore_turned_faces_that_fit(v, faces, kRestoredFaceTilt, x);
   result = (x * edge).rowwise() + centre;
   if (!result.allFinite()) {
     error = "the solve produced non-finite positions";

@@ -22,7 +22,10 @@
 //      it was: Gaussian noise moved it by more than 4 sigma with a probability of about 0.1%
 //      (3 degrees of freedom), while the uniform Laplacian moves a vertex with long edges (a
 //      CAD part's fans) by several mean edges (turbine at 10% noise: RMS vertex error 70.7 to
-//      22.8, in 1e-4 of the diagonal; ours, docs/quality.md).
+//      22.8, in 1e-4 of the diagonal; ours, docs/quality.md);
+//   6. faces the smoothing turned over go back to the input where they fit the smoothed surface
+//      (within kRestoredFaceTilt; flip_guard.h): on clean irregular meshes these are wrinkles of
+//      the triangulation, which a noisy face does not pass for (ours, docs/quality.md).
 // Why not the paper's curvature filter for this: docs/quality.md (filtering along one cycle
 // leaves stripes, the keep-tangential target carries the input's noise into the result, and
 // the cotangent Laplacian breaks on slivers).
@@ -41,6 +44,9 @@ constexpr double kMuScale = 0.233;
 constexpr double kTangentialCap = 7.0;
 // How far, in noise sigmas, the smoothing may move a vertex (times the strength above 1).
 constexpr double kMoveRadius = 4.0;
+// A face the smoothing turned over goes back if, put back, it is within this of the smoothed
+// surface (degrees).
+constexpr double kRestoredFaceTilt = 60.0;
 // The weakest cut-off the cross-validation scores, relative to the noise level's (docs/quality.md).
 constexpr double kWeakestSearched = 1.5;
 // The strongest: the noise level's cut-off divided by this.
@@ -69,6 +75,7 @@ struct NoiseAdaptiveSmoothingReport {
   double rms_displacement = 0;
   int unfolded_vertices = 0;   // moved to their one-ring centroid to undo a fold
   int held_vertices = 0;       // held at kMoveRadius noise sigmas from where they were
+  int restored_faces = 0;      // turned over by the smoothing, put back (step 6)
   int iterations = 0;          // conjugate gradient iterations of the solve
   double error_bound = 0;      // largest position error of the solve, at most, / bbox diagonal
   std::vector<StageTime> stages;

@@ -37,6 +37,33 @@ TEST(FlipGuard, RestoresOnlyTheVerticesOfTurnedFaces) {
   EXPECT_EQ(turned_faces(m.positions, moved, m.faces), 0);
 }
 
+// Mirrors a face's first vertex across the opposite edge, within the face: the face turns over.
+Positions with_face_turned(const Positions& p, const Faces& faces, Eigen::Index f) {
+  Positions out = p;
+  const Eigen::RowVector3d a = p.row(faces(f, 1)), b = p.row(faces(f, 2));
+  const Eigen::RowVector3d d = p.row(faces(f, 0)) - a, edge = (b - a).normalized();
+  out.row(faces(f, 0)) = a + 2 * d.dot(edge) * edge - d;
+  return out;
+}
+
+TEST(FlipGuard, PutsBackAFaceTurnedOverThatFitsTheSurface) {
+  const test::ArrayMesh m = test::sphere(3);
+  Positions result = with_face_turned(m.positions, m.faces, 0);
+  ASSERT_GT(turned_faces(m.positions, result, m.faces), 0);
+  EXPECT_GE(restore_turned_faces_that_fit(m.positions, m.faces, 60, result), 1);
+  EXPECT_EQ(result, m.positions);
+}
+
+// A smoothing must turn over what noise folded: a face folded in the input stays turned.
+TEST(FlipGuard, LeavesAFoldOfTheInputTurned) {
+  const test::ArrayMesh m = test::sphere(3);
+  const Positions folded = with_face_turned(m.positions, m.faces, 0);
+  Positions result = m.positions;
+  ASSERT_GT(turned_faces(folded, result, m.faces), 0);
+  EXPECT_EQ(restore_turned_faces_that_fit(folded, m.faces, 60, result), 0);
+  EXPECT_EQ(result, m.positions);
+}
+
 // enhance.mlx on a clean irregular mesh turned 171 of bull's faces over before the guard.
 TEST(FlipGuard, EnhancementTurnsNoFaceOver) {
   const test::ArrayMesh bull = test::load_data_mesh("bull");
