@@ -13,6 +13,7 @@
 #include "filters/feature_preserving_denoise.h"
 #include "filters/noise_adaptive_smoothing.h"
 #include "reconstruction/normal_vertex_update.h"
+#include "reconstruction/flip_guard.h"
 #include "mesh/sharp_features.h"
 
 #include <Eigen/SparseCholesky>
@@ -496,88 +497,48 @@ int main(int argc, char** argv) {
       std::printf("  sigma %.3f, of the smoothing %.4f (ratio %.3f), mu %.3f%s\n", r.sigma_used, after.relative(), after.relative() / r.sigma_used,
                   r.mu, r.cutoff_selected ? " selected" : "");
     }
-    // faces sharing a vertex
+    // each face normal replaced by the area-weighted mean over the faces sharing a vertex with it
     std::vector<std::vector<int>> vf(n);
     for (Eigen::Index i = 0; i < f.rows(); ++i) for (int k = 0; k < 3; ++k) vf[f(i, k)].push_back(int(i));
-    for (double range : {0.0})
-      for (int passes : {1})
-        for (int iters : {2}) {
-          Positions fn = face_normals(nas, f);
-          Eigen::VectorXd area(f.rows());
-          for (Eigen::Index i = 0; i < f.rows(); ++i) {
-            Eigen::Vector3d a = nas.row(f(i, 0)), b = nas.row(f(i, 1)), c = nas.row(f(i, 2));
-            area[i] = 0.5 * (b - a).cross(c - a).norm();
-          }
-          for (int p = 0; p < passes; ++p) {
-            Positions next(f.rows(), 3);
-            for (Eigen::Index i = 0; i < f.rows(); ++i) {
-              Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
-              std::vector<int> seen;
-              for (int k = 0; k < 3; ++k) for (int g : vf[f(i, k)]) seen.push_back(g);
-              std::sort(seen.begin(), seen.end());
-              seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
-              for (int g : seen) {
-                double w = area[g];
-                if (range > 0) w *= std::exp(-(fn.row(i) - fn.row(g)).squaredNorm() / (2 * range * range));
-                sum += w * fn.row(g);
-              }
-              next.row(i) = sum.normalized();
-            }
-            fn = next;
-          }
-          Positions out = fit_vertices_to_normals(nas, f, fn, iters);
-          const double radius = kMoveRadius * r.sigma_used * h;
-          for (int i = 0; i < n; ++i) {
-            Eigen::RowVector3d d = out.row(i) - noisy.row(i);
-            if (d.norm() > radius) out.row(i) = noisy.row(i) + d * (radius / d.norm());
-          }
-          char name[64];
-          std::snprintf(name, sizeof name, "+ normals r%.1f p%d it%d", range, passes, iters);
-          show(name, out);
-        }
+    const Positions fn = face_normals(nas, f);
+    Positions averaged(f.rows(), 3);
+    for (Eigen::Index i = 0; i < f.rows(); ++i) {
+      std::vector<int> around;
+      for (int k = 0; k < 3; ++k) around.insert(around.end(), vf[f(i, k)].begin(), vf[f(i, k)].end());
+      std::sort(around.begin(), around.end());
+      around.erase(std::unique(around.begin(), around.end()), around.end());
+      Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
+      for (int g : around) {
+        Eigen::Vector3d a = nas.row(f(g, 0)), b = nas.row(f(g, 1)), c = nas.row(f(g, 2));
+        sum += 0.5 * (b - a).cross(c - a).norm() * fn.row(g);
+      }
+      averaged.row(i) = sum.normalized();
+    }
+    for (int iters : {1, 2, 3}) {  // vertex update iterations towards them, then the smoothing's hold
+      Positions out = fit_vertices_to_normals(nas, f, averaged, iters);
+      const double radius = kMoveRadius * r.sigma_used * h;
+      for (int i = 0; i < n; ++i) {
+        const Eigen::RowVector3d d = out.row(i) - noisy.row(i);
+        if (d.norm() > radius) out.row(i) = noisy.row(i) + d * (radius / d.norm());
+      }
+      char name[64];
+      std::snprintf(name, sizeof name, "+ normal pass, %d iterations", iters);
+      show(name, out);
+    }
     return 0;
   }
-  if (argc > 3 && std::string(argv[3]) == "u") {  // put back faces the smoothing turned over, where that is consistent
+  if (argc > 3 && std::string(argv[3]) == "u") {  // the put-back of turned faces with limits wider than the shipped one
     std::string err;
     Positions nas;
     NoiseAdaptiveSmoothingReport r;
     noise_adaptive_smooth(noisy, f, NoiseAdaptiveSmoothingOptions{}, nas, r, err);
-    show("NAS", nas);
-    std::vector<std::vector<int>> vf(n);
-    for (Eigen::Index i = 0; i < f.rows(); ++i) for (int k = 0; k < 3; ++k) vf[f(i, k)].push_back(int(i));
-    const Positions in_normals = face_normals(noisy, f);
-    const Positions in_vn = area_weighted_vertex_normals(noisy, f);
-    for (double limit_deg : {45.0, 60.0}) {
+    char name[64];
+    std::snprintf(name, sizeof name, "NAS (put back within %.0f: %d)", kRestoredFaceTilt, r.restored_faces);
+    show(name, nas);
+    for (double limit : {80.0, 90.0}) {
       Positions out = nas;
-      const double limit = std::cos(limit_deg * M_PI / 180);
-      const Positions out_vn = area_weighted_vertex_normals(nas, f);  // the result's surface, kept fixed
-      auto corner_normal = [&](Eigen::Index i) {
-        return Eigen::RowVector3d(out_vn.row(f(i, 0)) + out_vn.row(f(i, 1)) + out_vn.row(f(i, 2))).normalized();
-      };
-      auto unit_normal = [&](const Positions& p, Eigen::Index i) {
-        Eigen::RowVector3d a = p.row(f(i, 0)), b = p.row(f(i, 1)), c = p.row(f(i, 2));
-        return Eigen::RowVector3d((b - a).cross(c - a).normalized());
-      };
-      int restored = 0;
-      for (int pass = 0; pass < 3; ++pass)
-      for (Eigen::Index i = 0; i < f.rows(); ++i) {
-        if (unit_normal(out, i).dot(in_normals.row(i)) >= 0) continue;
-        const Eigen::RowVector3d in_corners = (in_vn.row(f(i, 0)) + in_vn.row(f(i, 1)) + in_vn.row(f(i, 2))).normalized();
-        if (in_normals.row(i).dot(in_corners) < 0) continue;  // folded in the input: the smoothing rightly turned it
-        Positions trial = out;
-        for (int k = 0; k < 3; ++k) trial.row(f(i, k)) = noisy.row(f(i, k));
-        bool ok = true;
-        for (int k = 0; k < 3 && ok; ++k)
-          for (int g : vf[f(i, k)]) {
-            const double c = unit_normal(trial, g).dot(corner_normal(g));
-            if (g == i ? c < limit : c < 0) { ok = false; break; }
-          }
-        if (!ok) continue;
-        out = trial;
-        ++restored;
-      }
-      char name[64];
-      std::snprintf(name, sizeof name, "restore within %.0f (%d)", limit_deg, restored);
+      const int restored = restore_turned_faces_that_fit(noisy, f, limit, out);
+      std::snprintf(name, sizeof name, "+ put back within %.0f (%d)", limit, restored);
       show(name, out);
     }
     return 0;
