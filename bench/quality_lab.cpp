@@ -501,6 +501,7 @@ int main(int argc, char** argv) {
     std::vector<std::vector<int>> vf(n);
     for (Eigen::Index i = 0; i < f.rows(); ++i) for (int k = 0; k < 3; ++k) vf[f(i, k)].push_back(int(i));
     const Positions fn = face_normals(nas, f);
+    for (double sr : {0.1, 0.2, 0.3, 0.5, 1e9}) {
     Positions averaged(f.rows(), 3);
     for (Eigen::Index i = 0; i < f.rows(); ++i) {
       std::vector<int> around;
@@ -510,11 +511,11 @@ int main(int argc, char** argv) {
       Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
       for (int g : around) {
         Eigen::Vector3d a = nas.row(f(g, 0)), b = nas.row(f(g, 1)), c = nas.row(f(g, 2));
-        sum += 0.5 * (b - a).cross(c - a).norm() * fn.row(g);
+        sum += 0.5 * (b - a).cross(c - a).norm() * std::exp(-(fn.row(g) - fn.row(i)).squaredNorm() / (2 * sr * sr)) * fn.row(g);
       }
       averaged.row(i) = sum.normalized();
     }
-    for (int iters : {1, 2, 3}) {  // vertex update iterations towards them, then the smoothing's hold
+    for (int iters : {2}) {  // vertex update iterations towards them, then the smoothing's hold
       Positions out = fit_vertices_to_normals(nas, f, averaged, iters);
       const double radius = kMoveRadius * r.sigma_used * h;
       for (int i = 0; i < n; ++i) {
@@ -522,8 +523,149 @@ int main(int argc, char** argv) {
         if (d.norm() > radius) out.row(i) = noisy.row(i) + d * (radius / d.norm());
       }
       char name[64];
-      std::snprintf(name, sizeof name, "+ normal pass, %d iterations", iters);
+      std::snprintf(name, sizeof name, "+ normal pass sr %.1f, %d it", sr, iters);
       show(name, out);
+    }
+    }
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[3]) == "o") {  // filter order p: min ||L^p X||^2 + mu^2p ||X - V||^2, best mu (oracle), raw
+    const double scale = 1.0 / h;
+    const Positions v = noisy * scale;
+    const Eigen::SparseMatrix<double> L = uniform_laplacian(f, n);
+    Eigen::SparseMatrix<double> Lp = L;
+    for (int order = 1; order <= 4; ++order) {
+      if (order > 1) Lp = Eigen::SparseMatrix<double>(Lp * L);
+      double best = 1e9, best_mu = 0, best_rms = 0;
+      for (double mu = 0.08; mu < 1.2; mu *= 1.12) {
+        const Positions out = ls_solve(Lp, Positions::Zero(n, 3), v, std::pow(mu, order)) / scale;
+        const Score s = score(out, clean, f);
+        if (s.ea < best) best = s.ea, best_mu = mu, best_rms = s.rms;
+      }
+      std::printf("  order %d best mu %.3f  E_a %6.2f  rms %6.1f\n", order, best_mu, best, best_rms);
+    }
+    {  // mixed: min ||X - V||^2 + (||L X|| / m1)^2 + (||L^2 X|| / m2^2)^2
+      const Eigen::SparseMatrix<double> L2 = L * L;
+      Eigen::SparseMatrix<double> I(n, n);
+      I.setIdentity();
+      const Eigen::SparseMatrix<double> A1 = L.transpose() * L, A2 = L2.transpose() * L2;
+      for (double ratio : {0.64, 0.8, 1.0, 1.25, 100.0}) {
+      double best = 1e9, bm1 = 0, bm2 = 0, brms = 0;
+        for (double m2 = 0.3; m2 < 2; m2 *= 1.08) {
+          const double m1 = ratio * m2;
+          Eigen::SparseMatrix<double> A = Eigen::SparseMatrix<double>(A1 / (m1 * m1) + A2 / std::pow(m2, 4)) + I;
+          Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
+          Positions out(n, 3);
+          for (int k = 0; k < 3; ++k) out.col(k) = solver.solve(Eigen::VectorXd(v.col(k)));
+          const Score s = score(out / scale, clean, f);
+          if (s.ea < best) best = s.ea, bm1 = m1, bm2 = m2, brms = s.rms;
+        }
+      std::printf("  mixed ratio %.2f best m1 %.3f m2 %.3f  E_a %6.2f  rms %6.1f\n", ratio, bm1, bm2, best, brms);
+      }
+    }
+    double best = 1e9, best_rms = 0;
+    int best_steps = 0;
+    for (int steps : {2, 3, 4, 5, 7, 10, 14, 20, 28, 40}) {
+      const Score s = score(taubin(noisy, f, steps, 0.5, -0.53), clean, f);
+      if (s.ea < best) best = s.ea, best_steps = steps, best_rms = s.rms;
+    }
+    std::printf("  taubin best steps %d  E_a %6.2f  rms %6.1f\n", best_steps, best, best_rms);
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[3]) == "R") {  // recorrupted-to-recorrupted risk of candidate pipelines against their true E_a
+    std::string err;
+    std::vector<std::vector<int>> vf(n);
+    for (Eigen::Index i = 0; i < f.rows(); ++i) for (int k = 0; k < 3; ++k) vf[f(i, k)].push_back(int(i));
+    auto pass = [&](const Positions& p, const Positions& input, double sigma) {
+      const Positions fn = face_normals(p, f);
+      Positions averaged(f.rows(), 3);
+      for (Eigen::Index i = 0; i < f.rows(); ++i) {
+        std::vector<int> around;
+        for (int k = 0; k < 3; ++k) around.insert(around.end(), vf[f(i, k)].begin(), vf[f(i, k)].end());
+        std::sort(around.begin(), around.end());
+        around.erase(std::unique(around.begin(), around.end()), around.end());
+        Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
+        for (int g : around) {
+          Eigen::Vector3d a = p.row(f(g, 0)), b = p.row(f(g, 1)), c = p.row(f(g, 2));
+          sum += 0.5 * (b - a).cross(c - a).norm() * fn.row(g);
+        }
+        averaged.row(i) = sum.normalized();
+      }
+      Positions out = fit_vertices_to_normals(p, f, averaged, 2);
+      const double radius = kMoveRadius * sigma * h;
+      for (int i = 0; i < n; ++i) {
+        const Eigen::RowVector3d d = out.row(i) - input.row(i);
+        if (d.norm() > radius) out.row(i) = input.row(i) + d * (radius / d.norm());
+      }
+      return out;
+    };
+    auto run = [&](int which, const Positions& in) {
+      NoiseAdaptiveSmoothingOptions o;
+      if (which == 2) o.tangential_cap = 1e9;
+      Positions out;
+      NoiseAdaptiveSmoothingReport r;
+      noise_adaptive_smooth(in, f, o, out, r, err);
+      if (which == 1) out = pass(out, in, r.sigma_used);
+      if (which == 3) out = taubin(in, f, 10, 0.5, -0.53);
+      return std::make_pair(out, r.sigma_used);
+    };
+    const Eigen::SparseMatrix<double> L = uniform_laplacian(f, n);
+    const double alpha = std::getenv("LAB_ALPHA") ? std::atof(std::getenv("LAB_ALPHA")) : 0.5;
+    const char* names[] = {"NAS", "NAS + normal pass", "NAS uncapped", "taubin10"};
+    const double sigma = run(0, noisy).second * h;
+    for (int which = 0; which < 4; ++which) {
+      const Positions truth_run = run(which, noisy).first;
+      double lap = 0, pos = 0, ang = 0;
+      const int draws = 3;
+      for (int d = 0; d < draws; ++d) {
+        std::mt19937 r2(100 + d);
+        std::normal_distribution<double> z(0, sigma);
+        Positions zn(n, 3);
+        for (int i = 0; i < n; ++i) for (int k = 0; k < 3; ++k) zn(i, k) = z(r2);
+        const Positions y1 = noisy + alpha * zn, y2 = noisy - zn / alpha;
+        const Positions out = run(which, y1).first;
+        lap += Positions(L * Positions(out - y2)).squaredNorm() / n;
+        pos += (out - y2).squaredNorm() / n;
+        ang += mean_face_normal_error_degrees(out, y2, f);
+      }
+      const Score s = score(truth_run, clean, f);
+      std::printf("  %-20s true E_a %6.2f rms %5.1f | R2R lap %.5f pos %.5f ang %.2f\n", names[which], s.ea, s.rms, lap / draws / (h * h),
+                  pos / draws / (h * h), ang / draws);
+    }
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[3]) == "S") {  // strength chosen by recorrupted-to-recorrupted face-normal angle, against the true E_a
+    std::string err;
+    NoiseAdaptiveSmoothingOptions base;
+    base.select_cutoff = false;
+    Positions out;
+    NoiseAdaptiveSmoothingReport r;
+    noise_adaptive_smooth(noisy, f, base, out, r, err);
+    const double sigma = r.sigma_used * h;
+    const double alpha = std::getenv("LAB_ALPHA") ? std::atof(std::getenv("LAB_ALPHA")) : 0.5;
+    const int draws = 3;
+    std::vector<Positions> y1s, y2s;
+    for (int d = 0; d < draws; ++d) {
+      std::mt19937 r2(100 + d);
+      std::normal_distribution<double> z(0, sigma);
+      Positions zn(n, 3);
+      for (int i = 0; i < n; ++i) for (int k = 0; k < 3; ++k) zn(i, k) = z(r2);
+      y1s.push_back(noisy + alpha * zn);
+      y2s.push_back(noisy - zn / alpha);
+    }
+    for (double strength : {0.35, 0.5, 0.7, 1.0, 1.4, 2.0, 2.8}) {
+      NoiseAdaptiveSmoothingOptions o = base;
+      o.strength = strength;
+      noise_adaptive_smooth(noisy, f, o, out, r, err);
+      const Score truth = score(out, clean, f);
+      double ang = 0;
+      for (int d = 0; d < draws; ++d) {
+        o.noise = sigma / h;  // the same cut-off law as on the data
+        Positions o1;
+        noise_adaptive_smooth(y1s[d], f, o, o1, r, err);
+        ang += mean_face_normal_error_degrees(o1, y2s[d], f);
+      }
+      std::printf("  strength %.2f  true E_a %6.2f rms %5.1f | R2R angle %.3f\n", strength, truth.ea, truth.rms, ang / draws);
     }
     return 0;
   }
@@ -691,6 +833,9 @@ int main(int argc, char** argv) {
         NoiseAdaptiveSmoothingOptions o;
         o.strength = strength;
         o.select_cutoff = !std::getenv("LAB_NOSELECT");
+        if (const char* cap = std::getenv("LAB_CAP")) o.tangential_cap = std::atof(cap);
+        if (const char* ms = std::getenv("LAB_MUSCALE")) o.mu_scale = std::atof(ms);
+        if (const char* wa = std::getenv("LAB_WEAKER")) o.weaker_allowed = std::atof(wa);
         Positions out;
         NoiseAdaptiveSmoothingReport r;
         if (!noise_adaptive_smooth(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); return 1; }

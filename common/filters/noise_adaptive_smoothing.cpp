@@ -114,7 +114,7 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
   clock.done("adjacency");
   // A noise-free mesh gives sigma ~ 0: mu is then capped where the filter is the identity to
   // well under a thousandth of an edge.
-  const double noise_cutoff = std::min(kMuScale / std::sqrt(std::max(sigma, 1e-12)), 1e3);
+  const double noise_cutoff = std::min(options.mu_scale / std::sqrt(std::max(sigma, 1e-12)), 1e3);
   report.mu = options.mu > 0 ? options.mu : noise_cutoff / std::sqrt(options.strength);
   if (!(options.mu > 0) && options.select_cutoff) {
     // Cross-validation minimises a squared error, which large errors dominate, so on its own it
@@ -125,14 +125,14 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
     // as 1 / mu^2, and the angle error gains little beyond (docs/quality.md).
     step(20, "Cut-off by cross-validation");
     CutoffSelectionOptions search;
-    search.mu_largest = kWeakestSearched * noise_cutoff;
+    search.mu_largest = kWeakestSearched * std::max(1.0, options.weaker_allowed) * noise_cutoff;
     search.mu_smallest = noise_cutoff / kStrongestSelected;
     CutoffSelection selection;
     if (!select_cutoff(adjacency, v, smoothed_vertex_normals(v, faces, adjacency), search, selection, error,
                        [&](double done) { step(20 + static_cast<int>(10 * done), "Cut-off by cross-validation"); }))
       return false;
     report.cutoff_selected = selection.mu < noise_cutoff;
-    report.mu = std::min(selection.mu, noise_cutoff) / std::sqrt(options.strength);
+    report.mu = std::min(selection.mu, options.weaker_allowed * noise_cutoff) / std::sqrt(options.strength);
     report.selection_iterations = selection.iterations;
     report.selection_vertices = selection.sampled_vertices;
     clock.done("cut-off selection");
@@ -155,7 +155,7 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
   // Tangential moves capped, except around faces the cap would leave tilted (more than 60
   // degrees from the uncapped result's face): there the slide untangles noise-flipped triangles.
   const Positions uncapped = x;
-  const double cap = kTangentialCap * sigma * sigma * options.strength;
+  const double cap = options.tangential_cap * sigma * sigma * options.strength;
   const Positions normals = area_weighted_vertex_normals(x, faces);
   for (int i = 0; i < n; ++i) {
     const Eigen::RowVector3d move = x.row(i) - v.row(i);

@@ -60,6 +60,12 @@ struct NoiseAdaptiveSmoothingOptions {
   double strength = 1;         // > 1 smooths more, < 1 less
   double mu = 0;               // > 0: this cut-off instead of the one the noise sets (experiments)
   bool select_cutoff = true;   // a stronger cut-off than the noise level's where cross-validation finds one
+  // Experiments (bench/quality_lab, docs/quality.md item 8): the tangential cap's factor
+  // (infinity: no cap), the noise law's scale, and how much weaker than the noise law's cut-off
+  // the cross-validation may choose.
+  double tangential_cap = kTangentialCap;
+  double mu_scale = kMuScale;
+  double weaker_allowed = 1;
   CycleOptions cycle;
   EmdOptions emd;
 };
