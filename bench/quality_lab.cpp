@@ -256,6 +256,34 @@ Eigen::VectorXd hht_lowpass(const Eigen::VectorXd& s, const Faces& f, int n, int
 
 }  // namespace
 
+// Each face normal replaced by the area-weighted mean over the faces sharing a vertex with it,
+// each weighted further by exp(-|n_g - n_f|^2 / 2 w^2) (w = infinity: the plain mean).
+Positions averaged_face_normals(const Positions& p, const Faces& f, const std::vector<std::vector<int>>& faces_of, double width) {
+  const Positions fn = face_normals(p, f);
+  Positions averaged(f.rows(), 3);
+  for (Eigen::Index i = 0; i < f.rows(); ++i) {
+    std::vector<int> around;
+    for (int k = 0; k < 3; ++k) around.insert(around.end(), faces_of[f(i, k)].begin(), faces_of[f(i, k)].end());
+    std::sort(around.begin(), around.end());
+    around.erase(std::unique(around.begin(), around.end()), around.end());
+    Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
+    for (int g : around) {
+      const Eigen::Vector3d a = p.row(f(g, 0)), b = p.row(f(g, 1)), c = p.row(f(g, 2));
+      sum += 0.5 * (b - a).cross(c - a).norm() * std::exp(-(fn.row(g) - fn.row(i)).squaredNorm() / (2 * width * width)) * fn.row(g);
+    }
+    averaged.row(i) = sum.normalized();
+  }
+  return averaged;
+}
+
+// The smoothing's last step: no vertex further than `radius` from the input.
+void hold(Positions& out, const Positions& input, double radius) {
+  for (Eigen::Index i = 0; i < out.rows(); ++i) {
+    const Eigen::RowVector3d d = out.row(i) - input.row(i);
+    if (d.norm() > radius) out.row(i) = input.row(i) + d * (radius / d.norm());
+  }
+}
+
 int main(int argc, char** argv) {
   if (argc < 3) return 1;
   Positions clean;
@@ -497,35 +525,14 @@ int main(int argc, char** argv) {
       std::printf("  sigma %.3f, of the smoothing %.4f (ratio %.3f), mu %.3f%s\n", r.sigma_used, after.relative(), after.relative() / r.sigma_used,
                   r.mu, r.cutoff_selected ? " selected" : "");
     }
-    // each face normal replaced by the area-weighted mean over the faces sharing a vertex with it
     std::vector<std::vector<int>> vf(n);
     for (Eigen::Index i = 0; i < f.rows(); ++i) for (int k = 0; k < 3; ++k) vf[f(i, k)].push_back(int(i));
-    const Positions fn = face_normals(nas, f);
-    for (double sr : {0.1, 0.2, 0.3, 0.5, 1e9}) {
-    Positions averaged(f.rows(), 3);
-    for (Eigen::Index i = 0; i < f.rows(); ++i) {
-      std::vector<int> around;
-      for (int k = 0; k < 3; ++k) around.insert(around.end(), vf[f(i, k)].begin(), vf[f(i, k)].end());
-      std::sort(around.begin(), around.end());
-      around.erase(std::unique(around.begin(), around.end()), around.end());
-      Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
-      for (int g : around) {
-        Eigen::Vector3d a = nas.row(f(g, 0)), b = nas.row(f(g, 1)), c = nas.row(f(g, 2));
-        sum += 0.5 * (b - a).cross(c - a).norm() * std::exp(-(fn.row(g) - fn.row(i)).squaredNorm() / (2 * sr * sr)) * fn.row(g);
-      }
-      averaged.row(i) = sum.normalized();
-    }
-    for (int iters : {2}) {  // vertex update iterations towards them, then the smoothing's hold
-      Positions out = fit_vertices_to_normals(nas, f, averaged, iters);
-      const double radius = kMoveRadius * r.sigma_used * h;
-      for (int i = 0; i < n; ++i) {
-        const Eigen::RowVector3d d = out.row(i) - noisy.row(i);
-        if (d.norm() > radius) out.row(i) = noisy.row(i) + d * (radius / d.norm());
-      }
+    for (double width : {0.1, 0.2, 0.3, 0.5, 1e9}) {  // then 2 vertex update iterations and the smoothing's hold
+      Positions out = fit_vertices_to_normals(nas, f, averaged_face_normals(nas, f, vf, width), 2);
+      hold(out, noisy, kMoveRadius * r.sigma_used * h);
       char name[64];
-      std::snprintf(name, sizeof name, "+ normal pass sr %.1f, %d it", sr, iters);
+      std::snprintf(name, sizeof name, "+ normal pass width %.1f", width);
       show(name, out);
-    }
     }
     return 0;
   }
@@ -577,26 +584,8 @@ int main(int argc, char** argv) {
     std::vector<std::vector<int>> vf(n);
     for (Eigen::Index i = 0; i < f.rows(); ++i) for (int k = 0; k < 3; ++k) vf[f(i, k)].push_back(int(i));
     auto pass = [&](const Positions& p, const Positions& input, double sigma) {
-      const Positions fn = face_normals(p, f);
-      Positions averaged(f.rows(), 3);
-      for (Eigen::Index i = 0; i < f.rows(); ++i) {
-        std::vector<int> around;
-        for (int k = 0; k < 3; ++k) around.insert(around.end(), vf[f(i, k)].begin(), vf[f(i, k)].end());
-        std::sort(around.begin(), around.end());
-        around.erase(std::unique(around.begin(), around.end()), around.end());
-        Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
-        for (int g : around) {
-          Eigen::Vector3d a = p.row(f(g, 0)), b = p.row(f(g, 1)), c = p.row(f(g, 2));
-          sum += 0.5 * (b - a).cross(c - a).norm() * fn.row(g);
-        }
-        averaged.row(i) = sum.normalized();
-      }
-      Positions out = fit_vertices_to_normals(p, f, averaged, 2);
-      const double radius = kMoveRadius * sigma * h;
-      for (int i = 0; i < n; ++i) {
-        const Eigen::RowVector3d d = out.row(i) - input.row(i);
-        if (d.norm() > radius) out.row(i) = input.row(i) + d * (radius / d.norm());
-      }
+      Positions out = fit_vertices_to_normals(p, f, averaged_face_normals(p, f, vf, 1e9), 2);
+      hold(out, input, kMoveRadius * sigma * h);
       return out;
     };
     auto run = [&](int which, const Positions& in) {
