@@ -2,6 +2,8 @@
 // candidate smoothers, E_a / RMS / flips against the clean mesh.
 #include "bench_util.h"
 #include "cycle/cycle_decomposition.h"
+#include "cycle/cycle_signal.h"
+#include "signal/noise_estimate.h"
 #include "evaluation/denoise_metrics.h"
 #include "evaluation/gaussian_noise.h"
 #include "mesh/mean_curvature.h"
@@ -285,6 +287,7 @@ void hold(Positions& out, const Positions& input, double radius) {
 }
 
 int main(int argc, char** argv) {
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);
   if (argc < 3) return 1;
   Positions clean;
   Faces f;
@@ -647,15 +650,194 @@ int main(int argc, char** argv) {
       o.strength = strength;
       noise_adaptive_smooth(noisy, f, o, out, r, err);
       const Score truth = score(out, clean, f);
-      double ang = 0;
+      double ang = 0, area = 0, area_weighted = 0;
+      auto area_vector = [&](const Positions& p, Eigen::Index g) {
+        const Eigen::RowVector3d a = p.row(f(g, 0));
+        return Eigen::RowVector3d((p.row(f(g, 1)) - a).cross(p.row(f(g, 2)) - a));
+      };
       for (int d = 0; d < draws; ++d) {
         o.noise = sigma / h;  // the same cut-off law as on the data
         Positions o1;
         noise_adaptive_smooth(y1s[d], f, o, o1, r, err);
         ang += mean_face_normal_error_degrees(o1, y2s[d], f);
+        // area vectors are quadratic in the positions, so y2's are unbiased for the clean ones
+        for (Eigen::Index g = 0; g < f.rows(); ++g) {
+          const Eigen::RowVector3d a1 = area_vector(o1, g), a2 = area_vector(y2s[d], g);
+          area += (a1 - a2).squaredNorm() / (h * h * h * h);
+          area_weighted += (a1 - a2).squaredNorm() / std::max(a1.squaredNorm(), 1e-30);
+        }
       }
-      std::printf("  strength %.2f  true E_a %6.2f rms %5.1f | R2R angle %.3f\n", strength, truth.ea, truth.rms, ang / draws);
+      std::printf("  strength %.2f  true E_a %6.2f rms %5.1f | R2R angle %.3f area %.4f weighted %.4f\n", strength, truth.ea, truth.rms, ang / draws,
+                  area / draws / f.rows(), area_weighted / draws / f.rows());
     }
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[3]) == "P") {  // a cut-off per patch: oracle and cross-validation, against the global ones (raw filter)
+    std::string err;
+    NoiseAdaptiveSmoothingOptions base;
+    base.select_cutoff = false;
+    Positions nas;
+    NoiseAdaptiveSmoothingReport r;
+    noise_adaptive_smooth(noisy, f, base, nas, r, err);
+    const double mu0 = kMuScale / std::sqrt(r.sigma_used);
+    const double scale = 1.0 / h;
+    const Positions v = noisy * scale;
+    const Eigen::SparseMatrix<double> L = uniform_laplacian(f, n);
+    const Eigen::SparseMatrix<double> L2 = L * L;
+    const Eigen::SparseMatrix<double> A0 = L2.transpose() * L2;
+    const std::vector<double> strengths{0.25, 0.35, 0.5, 0.7, 1.0, 1.4, 2.0, 2.8, 4.0};
+    const int S = int(strengths.size());
+    auto solve_weights = [&](const Eigen::VectorXd& w, const Positions& rhs_base) {
+      Eigen::SparseMatrix<double> A = A0;
+      for (int i = 0; i < n; ++i) A.coeffRef(i, i) += w[i];
+      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
+      Positions out(n, 3);
+      for (int k = 0; k < 3; ++k) out.col(k) = solver.solve(Eigen::VectorXd(w.cwiseProduct(rhs_base.col(k))));
+      return out;
+    };
+    Positions probes(n, 3);
+    std::mt19937 pr(5);
+    for (int i = 0; i < n; ++i) for (int k = 0; k < 3; ++k) probes(i, k) = (pr() & 1) ? 1.0 : -1.0;
+    std::vector<Positions> xs, as;
+    for (double st : strengths) {
+      const Eigen::VectorXd w = Eigen::VectorXd::Constant(n, std::pow(mu0 / std::sqrt(st), 4));
+      xs.push_back(solve_weights(w, v));
+      as.push_back(solve_weights(w, probes));
+    }
+    const Positions normals = area_weighted_vertex_normals(xs[4], f);
+    const auto adj = adjacency(f, n);
+    const int patch_size = std::getenv("LAB_PATCH") ? std::atoi(std::getenv("LAB_PATCH")) : 400;
+    std::vector<int> patch(n, -1);
+    int patches = 0;
+    for (int seed = 0; seed < n; ++seed) {
+      if (patch[seed] >= 0) continue;
+      std::vector<int> queue{seed};
+      patch[seed] = patches;
+      for (size_t head = 0; head < queue.size() && int(queue.size()) < patch_size; ++head)
+        for (int j : adj[queue[head]])
+          if (patch[j] < 0 && int(queue.size()) < patch_size) { patch[j] = patches; queue.push_back(j); }
+      ++patches;
+    }
+    // per patch and strength: GCV score parts and true E_a sums
+    std::vector<std::vector<double>> d(patches, std::vector<double>(S, 0)), tka(patches, std::vector<double>(S, 0)),
+        ea(patches, std::vector<double>(S, 0));
+    std::vector<double> tk(patches, 0);
+    std::vector<int> nf(patches, 0);
+    const Positions cn = face_normals(clean, f);
+    for (int s_ = 0; s_ < S; ++s_) {
+      Eigen::VectorXd removed(n);
+      for (int i = 0; i < n; ++i) removed[i] = normals.row(i).dot(xs[s_].row(i) - v.row(i));
+      for (int i = 0; i < n; ++i)
+        for (int j : adj[i]) {
+          if (j < i) continue;
+          const int p = patch[i];
+          d[p][s_] += std::pow(removed[i] - removed[j], 2);
+          tka[p][s_] += (probes.row(i) - probes.row(j)).dot(as[s_].row(i) - as[s_].row(j)) / 3;
+          if (s_ == 0) tk[p] += 1;
+        }
+      const Positions fn = face_normals(xs[s_], f);
+      for (Eigen::Index g = 0; g < f.rows(); ++g) {
+        const int p = patch[f(g, 0)];
+        ea[p][s_] += std::acos(std::clamp(fn.row(g).dot(cn.row(g)), -1.0, 1.0)) * 180 / M_PI;
+        if (s_ == 0) ++nf[p];
+      }
+    }
+    // a strength per patch -> per vertex log strength, smoothed over a few rings
+    auto field = [&](const std::vector<int>& choice) -> Positions {
+      Eigen::VectorXd ls(n);
+      for (int i = 0; i < n; ++i) ls[i] = std::log(strengths[choice[patch[i]]]);
+      for (int sweep = 0; sweep < 10; ++sweep) {
+        Eigen::VectorXd next(n);
+        for (int i = 0; i < n; ++i) {
+          double sum = ls[i];
+          for (int j : adj[i]) sum += ls[j];
+          next[i] = sum / (1 + adj[i].size());
+        }
+        ls = next;
+      }
+      Eigen::VectorXd w(n);
+      for (int i = 0; i < n; ++i) w[i] = std::pow(mu0, 4) / std::exp(2 * ls[i]);
+      return solve_weights(w, v) / scale;
+    };
+    std::vector<int> oracle(patches), gcv(patches);
+    std::vector<double> gtot(S, 0), dtot(S, 0), ttot(S, 0), ktot(S, 0);
+    for (int p = 0; p < patches; ++p) {
+      int bo = 0, bg = 0;
+      double bgs = 1e300;
+      for (int s_ = 0; s_ < S; ++s_) {
+        if (ea[p][s_] < ea[p][bo]) bo = s_;
+        const double kept = 1 - tka[p][s_] / (2 * tk[p]);
+        const double g = kept > 0 ? d[p][s_] / (kept * kept) : 1e300;
+        if (g < bgs) bgs = g, bg = s_;
+        dtot[s_] += d[p][s_];
+        ttot[s_] += tka[p][s_];
+        ktot[s_] += 2 * tk[p];
+      }
+      oracle[p] = bo;
+      gcv[p] = bg;
+    }
+    int global_gcv = 0;
+    for (int s_ = 0; s_ < S; ++s_) {
+      const double kept = 1 - ttot[s_] / ktot[s_];
+      gtot[s_] = d.size() ? dtot[s_] / (kept * kept) : 0;
+      if (gtot[s_] < gtot[global_gcv]) global_gcv = s_;
+      char name[64];
+      std::snprintf(name, sizeof name, "raw strength %.2f", strengths[s_]);
+      show(name, xs[s_] / scale);
+    }
+    std::printf("  %d patches of %d; global GCV chooses %.2f\n", patches, patch_size, strengths[global_gcv]);
+    show("per-patch oracle", field(oracle));
+    show("per-patch GCV", field(gcv));
+    std::map<double, int> histogram;
+    std::map<std::pair<int, int>, int> pairs;
+    for (int p = 0; p < patches; ++p) histogram[strengths[gcv[p]]]++, pairs[{gcv[p], oracle[p]}]++;
+    std::printf("  (GCV, oracle) index pairs:");
+    for (auto& [k, c] : pairs) std::printf(" (%d,%d):%d", k.first, k.second, c);
+    std::printf("\n");
+    std::printf("  GCV choices:");
+    for (auto& [k, c] : histogram) std::printf(" %.2f:%d", k, c);
+    std::printf("\n");
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[3]) == "F") {  // the noise estimate's floor: one-ring heights with the curvature's share taken out
+    std::string err;
+    HamiltonianCycle cycle;
+    hamiltonian_cycle(f, n, CycleOptions{}, cycle, err);
+    auto estimate = [&](const Positions& p, bool corrected) {
+      const VertexAdjacency a = vertex_adjacency(f, n);
+      Eigen::VectorXd hgt = one_ring_heights(p, f, a), spread(n);
+      for (int i = 0; i < n; ++i) {
+        double sum = 0;
+        for (const int* j = a.begin(i); j != a.end(i); ++j) sum += (p.row(*j) - p.row(i)).squaredNorm();
+        spread[i] = a.valence(i) > 0 ? sum / a.valence(i) / 2 : 0;
+      }
+      if (corrected) {
+        Eigen::VectorXd kappa(n), out = hgt;
+        for (int i = 0; i < n; ++i) kappa[i] = spread[i] > 0 ? hgt[i] / spread[i] : 0;
+        for (int i = 0; i < n; ++i) {
+          if (a.valence(i) == 0) continue;
+          double k = 0;
+          for (const int* j = a.begin(i); j != a.end(i); ++j) k += kappa[*j];
+          out[i] = hgt[i] - k / a.valence(i) * spread[i];
+        }
+        hgt = out;
+      }
+      std::vector<double> finest;
+      for (const auto& seg : signals_along_cycle(cycle, hgt)) {
+        EmdOptions o;
+        o.max_imfs = 1;
+        const EmdResult e = emd(seg, o);
+        if (!e.imfs.empty()) finest.insert(finest.end(), e.imfs[0].begin(), e.imfs[0].end());
+      }
+      std::vector<double> d(finest);
+      std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
+      const double med = d[d.size() / 2];
+      for (double& x : d) x = std::abs(x - med);
+      std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
+      return d[d.size() / 2] / 0.6745 / std::sqrt(1 + 1.0 / 6) / h;
+    };
+    std::printf("  sigma read, raw heights: clean %.4f noisy %.4f | curvature taken out: clean %.4f noisy %.4f (true %.3f)\n", estimate(clean, false),
+                estimate(noisy, false), estimate(clean, true), estimate(noisy, true), level);
     return 0;
   }
   if (argc > 3 && std::string(argv[3]) == "u") {  // the put-back of turned faces with limits wider than the shipped one
