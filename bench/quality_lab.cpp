@@ -463,8 +463,8 @@ int main(int argc, char** argv) {
       const double mu = kMuScale / std::sqrt(s * sigma);
       Positions x, az;
       BiharmonicLowPassReport br;
-      biharmonic_low_pass(adj, v, mu, 1e-7, x, br);
-      biharmonic_low_pass(adj, z, mu, 1e-7, az, br);
+      biharmonic_low_pass(adj, v, mu, 0, 1e-7, x, br);
+      biharmonic_low_pass(adj, z, mu, 0, 1e-7, az, br);
       Eigen::VectorXd a(n), t(n);
       for (int i = 0; i < n; ++i) {
         a(i) = nn.row(i).dot(x.row(i) - v.row(i));
@@ -840,6 +840,35 @@ int main(int argc, char** argv) {
                 estimate(noisy, false), estimate(clean, true), estimate(noisy, true), level);
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "M") {  // order 2 against the mix of orders 1 and 2, both at mu = c / sqrt(sigma estimated), raw
+    std::string err;
+    NoiseAdaptiveSmoothingOptions base;
+    base.select_cutoff = false;
+    Positions nas;
+    NoiseAdaptiveSmoothingReport r;
+    noise_adaptive_smooth(noisy, f, base, nas, r, err);
+    const double scale = 1.0 / h;
+    const Positions v = noisy * scale;
+    const Eigen::SparseMatrix<double> L = uniform_laplacian(f, n);
+    const Eigen::SparseMatrix<double> L2 = L * L;
+    const Eigen::SparseMatrix<double> A2 = L2.transpose() * L2, A1 = L.transpose() * L;
+    Eigen::SparseMatrix<double> I(n, n);
+    I.setIdentity();
+    for (int mixed = 0; mixed < 2; ++mixed) {
+      std::printf("  %s:", mixed ? "mix" : "order2");
+      for (double c : {0.14, 0.17, 0.2, 0.233, 0.27, 0.32, 0.38, 0.45}) {
+        const double mu = c / std::sqrt(r.sigma_used);
+        Eigen::SparseMatrix<double> A = Eigen::SparseMatrix<double>(A2 + (mixed ? mu * mu : 0.0) * A1) + std::pow(mu, 4) * I;
+        Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
+        Positions out(n, 3);
+        for (int k = 0; k < 3; ++k) out.col(k) = solver.solve(Eigen::VectorXd(std::pow(mu, 4) * v.col(k)));
+        const Score sc = score(out / scale, clean, f);
+        std::printf(" %.3f:%.2f/%.1f", c, sc.ea, sc.rms);
+      }
+      std::printf("\n");
+    }
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "u") {  // the put-back of turned faces with limits wider than the shipped one
     std::string err;
     Positions nas;
@@ -1007,6 +1036,7 @@ int main(int argc, char** argv) {
         if (const char* cap = std::getenv("LAB_CAP")) o.tangential_cap = std::atof(cap);
         if (const char* ms = std::getenv("LAB_MUSCALE")) o.mu_scale = std::atof(ms);
         if (const char* wa = std::getenv("LAB_WEAKER")) o.weaker_allowed = std::atof(wa);
+        if (const char* g = std::getenv("LAB_FIRST")) o.first_order = std::atof(g);
         Positions out;
         NoiseAdaptiveSmoothingReport r;
         if (!noise_adaptive_smooth(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); return 1; }

@@ -127,6 +127,7 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
     CutoffSelectionOptions search;
     search.mu_largest = kWeakestSearched * std::max(1.0, options.weaker_allowed) * noise_cutoff;
     search.mu_smallest = noise_cutoff / kStrongestSelected;
+    search.first_order = options.first_order;
     CutoffSelection selection;
     if (!select_cutoff(adjacency, v, smoothed_vertex_normals(v, faces, adjacency), search, selection, error,
                        [&](double done) { step(20 + static_cast<int>(10 * done), "Cut-off by cross-validation"); }))
@@ -142,7 +143,7 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
   const double diagonal = bounding_box_diagonal(positions);
   Positions x;
   BiharmonicLowPassReport solve;
-  const bool converged = biharmonic_low_pass(adjacency, v, report.mu, kSmoothingMaxError * diagonal / edge, x, solve,
+  const bool converged = biharmonic_low_pass(adjacency, v, report.mu, options.first_order, kSmoothingMaxError * diagonal / edge, x, solve,
                                              [&](double done) { step(30 + static_cast<int>(60 * done), "Least-squares smoothing (conjugate gradients)"); });
   report.iterations = solve.iterations;
   report.error_bound = solve.error_bound * edge / diagonal;

@@ -47,8 +47,9 @@ VertexAdjacency breadth_first_renumbered(const VertexAdjacency& adjacency, std::
 
 }  // namespace
 
-bool biharmonic_low_pass(const VertexAdjacency& input_adjacency, const Positions& input, double mu, double max_error,
-                         Positions& result, BiharmonicLowPassReport& report, const std::function<void(double)>& progress) {
+bool biharmonic_low_pass(const VertexAdjacency& input_adjacency, const Positions& input, double mu, double first_order,
+                         double max_error, Positions& result, BiharmonicLowPassReport& report,
+                         const std::function<void(double)>& progress) {
   report = BiharmonicLowPassReport{};
   std::vector<int> order;
   const VertexAdjacency adjacency = breadth_first_renumbered(input_adjacency, order);
@@ -61,10 +62,16 @@ bool biharmonic_low_pass(const VertexAdjacency& input_adjacency, const Positions
   for (int i = 0; i < n; ++i) inverse_valence[i] = adjacency.valence(i) > 0 ? 1.0 / adjacency.valence(i) : 0.0;
   const Eigen::VectorXd inverse_valence_squared = inverse_valence.cwiseAbs2();
 
-  Positions a, b;  // work vectors of the product, reused
-  // out = K D^-1 K D^-2 K D^-1 K y + mu^4 y = ((L^2)^T L^2 + mu^4 I) y
+  const double first_order_weight = first_order * mu * mu;
+  Positions a, b, c;  // work vectors of the product, reused
+  // out = K D^-1 K D^-2 K D^-1 K y + first_order mu^2 K D^-2 K y + mu^4 y
+  //     = ((L^2)^T L^2 + first_order mu^2 L^T L + mu^4 I) y
   auto apply = [&](const Positions& y, Positions& out) {
     apply_graph_laplacian(adjacency, y, a);
+    if (first_order_weight > 0) {
+      b = inverse_valence_squared.asDiagonal() * a;
+      apply_graph_laplacian(adjacency, b, c);
+    }
     a = inverse_valence.asDiagonal() * a;
     apply_graph_laplacian(adjacency, a, b);
     b = inverse_valence_squared.asDiagonal() * b;
@@ -72,6 +79,7 @@ bool biharmonic_low_pass(const VertexAdjacency& input_adjacency, const Positions
     a = inverse_valence.asDiagonal() * a;
     apply_graph_laplacian(adjacency, a, out);
     out += mu4 * y;
+    if (first_order_weight > 0) out += first_order_weight * c;
   };
 
   x = v;

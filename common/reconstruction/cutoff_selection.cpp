@@ -88,9 +88,9 @@ bool select_cutoff(const VertexAdjacency& full_adjacency, const Positions& full_
   auto score = [&](double mu, double& g) {
     Positions x, a;
     BiharmonicLowPassReport report;
-    if (!biharmonic_low_pass(adjacency, v, mu, options.max_error, x, report)) return false;
+    if (!biharmonic_low_pass(adjacency, v, mu, options.first_order, options.max_error, x, report)) return false;
     selection.iterations += report.iterations;
-    if (!biharmonic_low_pass(adjacency, probes, mu, options.max_error, a, report)) return false;
+    if (!biharmonic_low_pass(adjacency, probes, mu, options.first_order, options.max_error, a, report)) return false;
     selection.iterations += report.iterations;
     Eigen::VectorXd removed(n);
     for (int i = 0; i < n; ++i) removed[i] = normals.row(i).dot(x.row(i) - v.row(i));

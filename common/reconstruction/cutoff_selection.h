@@ -29,6 +29,7 @@ struct CutoffSelectionOptions {
   int sample_vertices = 30000;
   int patches = 8;            // patches of a sampled (large) mesh
   double max_error = 1e-4;    // of each solve, in the positions' unit (a mean edge)
+  double first_order = 0;     // the low-pass's first-order weight (biharmonic_low_pass.h)
 };
 
 struct CutoffSelection {

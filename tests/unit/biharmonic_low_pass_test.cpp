@@ -44,7 +44,8 @@ TEST(VertexAdjacency, MatchesTheFacesOneRingsAndBoundary) {
   EXPECT_EQ(adjacency.valence(n - 1), 0);
 }
 
-// The matrix-free solve against a direct factorisation of ((L^2)^T L^2 + mu^4 I) x = mu^4 v, on an
+// The matrix-free solve against a direct factorisation of
+// ((L^2)^T L^2 + g mu^2 L^T L + mu^4 I) x = mu^4 v, with and without the first-order term g, on an
 // irregular mesh with holes: the true error stays within the bound it stops at.
 TEST(BiharmonicLowPass, MatchesADirectSolveWithinItsBound) {
   const test::ArrayMesh m = test::remove_faces(test::flip_random_edges(test::sphere(4), 2000, 3), 9);
@@ -53,18 +54,20 @@ TEST(BiharmonicLowPass, MatchesADirectSolveWithinItsBound) {
   const VertexAdjacency adjacency = vertex_adjacency(m.faces, n);
   const Eigen::SparseMatrix<double> l = uniform_laplacian(adjacency);
   const Eigen::SparseMatrix<double> l2 = l * l;
+  for (double first_order : {0.0, 1.0})
   for (double mu : {0.3, 0.8}) {
     const double mu4 = std::pow(mu, 4);
-    Eigen::SparseMatrix<double> a = Eigen::SparseMatrix<double>(l2.transpose()) * l2;
+    Eigen::SparseMatrix<double> a = Eigen::SparseMatrix<double>(Eigen::SparseMatrix<double>(l2.transpose()) * l2) +
+                                    first_order * mu * mu * Eigen::SparseMatrix<double>(l.transpose()) * l;
     for (int i = 0; i < n; ++i) a.coeffRef(i, i) += mu4;
     const Positions expected = Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>(a).solve(Positions(mu4 * v));
     for (double max_error : {1e-3, 1e-7}) {
       Positions x;
       BiharmonicLowPassReport report;
-      ASSERT_TRUE(biharmonic_low_pass(adjacency, v, mu, max_error, x, report));
+      ASSERT_TRUE(biharmonic_low_pass(adjacency, v, mu, first_order, max_error, x, report));
       EXPECT_GT(report.iterations, 0);
       EXPECT_LE(report.error_bound, max_error);
-      EXPECT_LE((x - expected).norm(), max_error) << mu;
+      EXPECT_LE((x - expected).norm(), max_error) << mu << " " << first_order;
       EXPECT_GT((v - expected).norm(), 100 * max_error);  // the solution is not the start
     }
   }

@@ -37,7 +37,7 @@ Case noisy_case(const test::ArrayMesh& m, double level, unsigned seed) {
 double true_risk(const Case& c, double mu) {
   Positions x;
   BiharmonicLowPassReport report;
-  EXPECT_TRUE(biharmonic_low_pass(c.adjacency, c.noisy, mu, 1e-6, x, report));
+  EXPECT_TRUE(biharmonic_low_pass(c.adjacency, c.noisy, mu, 0, 1e-6, x, report));
   Eigen::VectorXd e(x.rows());
   for (Eigen::Index i = 0; i < x.rows(); ++i) e[i] = c.normals.row(i).dot(x.row(i) - c.clean.row(i));
   double risk = 0;

@@ -95,7 +95,8 @@ TEST(NoiseAdaptiveSmoothing, TurnsFewFacesOfACleanIrregularMeshOver) {
 
 // The iterative solve against a direct one of the documented system: with a given noise so large
 // that no tangential cap applies, the result is the solution of
-// ((L^2)^T L^2 + mu^4) x = mu^4 v, mu = kMuScale / sqrt(sigma), in unit mean edge lengths.
+// ((L^2)^T L^2 + kFirstOrder mu^2 L^T L + mu^4) x = mu^4 v, mu = kMuScale / sqrt(sigma), in unit
+// mean edge lengths.
 TEST(NoiseAdaptiveSmoothing, SolvesTheDocumentedSystem) {
   const test::ArrayMesh s = test::sphere(3);
   const Positions noisy = add_gaussian_noise(s.positions, s.faces, 20, NoiseDirection::Isotropic, 5);
@@ -115,7 +116,8 @@ TEST(NoiseAdaptiveSmoothing, SolvesTheDocumentedSystem) {
   const Positions v = (noisy.rowwise() - centre) / edge;
   const Eigen::SparseMatrix<double> l = uniform_laplacian(vertex_adjacency(s.faces, s.vertices()));
   const Eigen::SparseMatrix<double> l2 = l * l;
-  Eigen::SparseMatrix<double> a = Eigen::SparseMatrix<double>(l2.transpose()) * l2;
+  Eigen::SparseMatrix<double> a = Eigen::SparseMatrix<double>(Eigen::SparseMatrix<double>(l2.transpose()) * l2) +
+                                  kFirstOrder * report.mu * report.mu * Eigen::SparseMatrix<double>(l.transpose()) * l;
   const double mu4 = std::pow(report.mu, 4);
   for (int i = 0; i < s.vertices(); ++i) a.coeffRef(i, i) += mu4;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> direct(a);
