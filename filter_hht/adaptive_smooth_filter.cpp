@@ -73,7 +73,7 @@ FilterSpec adaptive_smooth_filter() {
   return {"HHT: Adaptive Smooth",
           "Removes noise with a strength set by the noise itself: the noise level is estimated from the finest IMF "
           "of the one-ring height signal along a Hamiltonian cycle (Kopsinis and McLaughlin's EMD noise estimate), "
-          "then the mesh is rebuilt by a least-squares solve that keeps mu^4 / (mu^4 + k^4) of each frequency k of the "
+          "then the mesh is rebuilt by a least-squares solve that keeps mu^4 / (mu^4 + mu^2 k^2 + k^4) of each frequency k of the "
           "uniform Laplacian, mu set by the noise or, where generalized cross-validation finds it better (a dense, "
           "smooth surface), a stronger one, with tangential slides capped by the noise level. Not the paper's "
           "method (its curvature filter leaves stripes and keeps the noise's tangential part): see docs/quality.md "
