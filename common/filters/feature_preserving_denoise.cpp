@@ -186,6 +186,8 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     NoiseAdaptiveSmoothingOptions smoothing;
     smoothing.noise = sigma;
     smoothing.select_cutoff = false;  // the noise level's cut-off: the refinement was measured from it
+    smoothing.first_order = kUntangleFirstOrder;
+    smoothing.mu_scale = kUntangleMuScale;
     NoiseAdaptiveSmoothingReport smoothing_report;
     Positions smoothed;
     if (!noise_adaptive_smooth(positions, faces, smoothing, smoothed, smoothing_report, error,
@@ -206,7 +208,8 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     report.crease_contrast = crease_contrast(smoothed, faces);
     if (route && report.crease_contrast < kCreaseContrast) {
       step(40, "No sharp creases: adaptive smoothing");
-      smoothing.select_cutoff = true;
+      smoothing = NoiseAdaptiveSmoothingOptions{};  // the adaptive smoothing's own filter
+      smoothing.noise = sigma;
       if (!noise_adaptive_smooth(positions, faces, smoothing, result, smoothing_report, error,
                                  [&](int percent, const char*) { step(40 + 59 * percent / 100, "No sharp creases: adaptive smoothing"); }))
         return false;

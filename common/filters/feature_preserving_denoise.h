@@ -49,6 +49,13 @@ constexpr double kRefineMoveToNoise = 0.75;
 // refinement: on the corpus organic meshes read 5-9, CAD parts with creases 9.5-22 (docs/quality.md).
 constexpr double kCreaseContrast = 9.0;
 
+// The untangling's smoothing (and the crease contrast measured on it) keeps the second-order
+// filter at the noise law's scale that the refinement, kTangledShare and kCreaseContrast were
+// measured with: with the adaptive smoothing's first-order term as the start, the refinement did
+// worse on fandisk and the meshed cube at 20-30% isotropic noise (docs/quality.md item 9).
+constexpr double kUntangleFirstOrder = 0.0;
+constexpr double kUntangleMuScale = 0.233;
+
 struct DenoiseOptions {
   bool paper_stage = false;     // the paper's divide-and-conquer HHT stage before the refinement
   double noise = 0;             // sigma / mean edge length; 0 or less: estimated
