@@ -144,6 +144,34 @@ TEST(FeaturePreservingDenoise, UntanglesNoiseInEveryDirection) {
   EXPECT_LT(ours, 4.5);
 }
 
+// The untangled start is the second-order smoothing at the noise law's cut-off that the refinement
+// was measured from (kUntangleFirstOrder, kUntangleMuScale), not the adaptive smoothing's own
+// filter (with it as the start fandisk and the cube lost 0.3-0.4 degrees: docs/quality.md item 9).
+TEST(FeaturePreservingDenoise, UntanglingStartsFromTheSecondOrderSmoothing) {
+  const test::ArrayMesh m = test::load_data_mesh("fandisk");
+  const Positions noisy = add_gaussian_noise(m.positions, m.faces, 30, NoiseDirection::Isotropic, 11);
+  DenoiseOptions o;
+  o.refine_normal_passes = 0;  // the start alone
+  DenoiseReport report;
+  const Positions start = denoise(noisy, m.faces, o, &report);
+  ASSERT_TRUE(report.untangled);
+  ASSERT_FALSE(report.smoothed_instead);
+  auto smoothing = [&](double first_order, double mu_scale) {
+    NoiseAdaptiveSmoothingOptions s;
+    s.noise = report.sigma_used;
+    s.select_cutoff = false;
+    s.first_order = first_order;
+    s.mu_scale = mu_scale;
+    Positions out;
+    NoiseAdaptiveSmoothingReport r;
+    std::string error;
+    EXPECT_TRUE(noise_adaptive_smooth(noisy, m.faces, s, out, r, error)) << error;
+    return out;
+  };
+  EXPECT_EQ(start, smoothing(kUntangleFirstOrder, kUntangleMuScale));
+  EXPECT_GT((start - smoothing(kFirstOrder, kMuScale)).cwiseAbs().maxCoeff(), 1e-3 * mean_edge_length(noisy, m.faces));
+}
+
 // MeshLab's progress bar: it never goes back, ends at 100, and moves inside the two long stages
 // (the untangling smoothing and the refinement rounds), not only at their starts.
 TEST(FeaturePreservingDenoise, ProgressMovesThroughEveryLongStage) {
