@@ -258,6 +258,18 @@ Eigen::VectorXd hht_lowpass(const Eigen::VectorXd& s, const Faces& f, int n, int
 
 }  // namespace
 
+// The adaptive smoothing's options with the lab's knobs (LAB_NOSELECT, LAB_CAP, LAB_MUSCALE,
+// LAB_WEAKER, LAB_FIRST) applied: every mode runs the same filter.
+NoiseAdaptiveSmoothingOptions lab_options() {
+  NoiseAdaptiveSmoothingOptions o;
+  o.select_cutoff = !std::getenv("LAB_NOSELECT");
+  if (const char* cap = std::getenv("LAB_CAP")) o.tangential_cap = std::atof(cap);
+  if (const char* ms = std::getenv("LAB_MUSCALE")) o.mu_scale = std::atof(ms);
+  if (const char* wa = std::getenv("LAB_WEAKER")) o.weaker_allowed = std::atof(wa);
+  if (const char* g = std::getenv("LAB_FIRST")) o.first_order = std::atof(g);
+  return o;
+}
+
 // Each face normal replaced by the area-weighted mean over the faces sharing a vertex with it,
 // each weighted further by exp(-|n_g - n_f|^2 / 2 w^2) (w = infinity: the plain mean).
 Positions averaged_face_normals(const Positions& p, const Faces& f, const std::vector<std::vector<int>>& faces_of, double width) {
@@ -440,7 +452,7 @@ int main(int argc, char** argv) {
   }
   if (argc > 3 && std::string(argv[3]) == "r") {  // risk of the normal edge differences: truth against SURE
     std::string err;
-    NoiseAdaptiveSmoothingOptions o;
+    NoiseAdaptiveSmoothingOptions o = lab_options();
     Positions base;
     NoiseAdaptiveSmoothingReport rep;
     if (!noise_adaptive_smooth(noisy, f, o, base, rep, err)) return 1;
@@ -460,7 +472,7 @@ int main(int argc, char** argv) {
     };
     std::printf("  sigma %.3f\n", sigma);
     for (double s : {0.25, 0.5, 0.7, 1.0, 1.4, 2.0, 2.8, 4.0, 5.6, 8.0}) {
-      const double mu = kMuScale / std::sqrt(s * sigma);
+      const double mu = lab_options().mu_scale / std::sqrt(s * sigma);
       Positions x, az;
       BiharmonicLowPassReport br;
       biharmonic_low_pass(adj, v, mu, 0, 1e-7, x, br);
@@ -492,7 +504,7 @@ int main(int argc, char** argv) {
   }
   if (argc > 3 && std::string(argv[3]) == "h") {  // dihedral angles of the adaptive smoothing's result
     std::string err;
-    NoiseAdaptiveSmoothingOptions o;
+    NoiseAdaptiveSmoothingOptions o = lab_options();
     Positions out;
     NoiseAdaptiveSmoothingReport r;
     if (!noise_adaptive_smooth(noisy, f, o, out, r, err)) return 1;
@@ -517,7 +529,7 @@ int main(int argc, char** argv) {
     std::string err;
     Positions nas;
     NoiseAdaptiveSmoothingReport r;
-    noise_adaptive_smooth(noisy, f, NoiseAdaptiveSmoothingOptions{}, nas, r, err);
+    noise_adaptive_smooth(noisy, f, lab_options(), nas, r, err);
     show("NAS", nas);
     show("taubin10", taubin(noisy, f, 10, 0.5, -0.53));
     {
@@ -592,7 +604,7 @@ int main(int argc, char** argv) {
       return out;
     };
     auto run = [&](int which, const Positions& in) {
-      NoiseAdaptiveSmoothingOptions o;
+      NoiseAdaptiveSmoothingOptions o = lab_options();
       if (which == 2) o.tangential_cap = 1e9;
       Positions out;
       NoiseAdaptiveSmoothingReport r;
@@ -628,7 +640,7 @@ int main(int argc, char** argv) {
   }
   if (argc > 3 && std::string(argv[3]) == "S") {  // strength chosen by recorrupted-to-recorrupted face-normal angle, against the true E_a
     std::string err;
-    NoiseAdaptiveSmoothingOptions base;
+    NoiseAdaptiveSmoothingOptions base = lab_options();
     base.select_cutoff = false;
     Positions out;
     NoiseAdaptiveSmoothingReport r;
@@ -674,12 +686,12 @@ int main(int argc, char** argv) {
   }
   if (argc > 3 && std::string(argv[3]) == "P") {  // a cut-off per patch: oracle and cross-validation, against the global ones (raw filter)
     std::string err;
-    NoiseAdaptiveSmoothingOptions base;
+    NoiseAdaptiveSmoothingOptions base = lab_options();
     base.select_cutoff = false;
     Positions nas;
     NoiseAdaptiveSmoothingReport r;
     noise_adaptive_smooth(noisy, f, base, nas, r, err);
-    const double mu0 = kMuScale / std::sqrt(r.sigma_used);
+    const double mu0 = base.mu_scale / std::sqrt(r.sigma_used);
     const double scale = 1.0 / h;
     const Positions v = noisy * scale;
     const Eigen::SparseMatrix<double> L = uniform_laplacian(f, n);
@@ -842,7 +854,7 @@ int main(int argc, char** argv) {
   }
   if (argc > 3 && std::string(argv[3]) == "M") {  // order 2 against the mix of orders 1 and 2, both at mu = c / sqrt(sigma estimated), raw
     std::string err;
-    NoiseAdaptiveSmoothingOptions base;
+    NoiseAdaptiveSmoothingOptions base = lab_options();
     base.select_cutoff = false;
     Positions nas;
     NoiseAdaptiveSmoothingReport r;
@@ -873,7 +885,7 @@ int main(int argc, char** argv) {
     std::string err;
     Positions nas;
     NoiseAdaptiveSmoothingReport r;
-    noise_adaptive_smooth(noisy, f, NoiseAdaptiveSmoothingOptions{}, nas, r, err);
+    noise_adaptive_smooth(noisy, f, lab_options(), nas, r, err);
     char name[64];
     std::snprintf(name, sizeof name, "NAS (put back within %.0f: %d)", kRestoredFaceTilt, r.restored_faces);
     show(name, nas);
@@ -889,7 +901,7 @@ int main(int argc, char** argv) {
     std::string err;
     Positions nas, den;
     NoiseAdaptiveSmoothingReport r;
-    noise_adaptive_smooth(noisy, f, NoiseAdaptiveSmoothingOptions{}, nas, r, err);
+    noise_adaptive_smooth(noisy, f, lab_options(), nas, r, err);
     DenoiseOptions d;
     d.smooth_surfaces_by_smoothing = false;
     DenoiseReport rep;
@@ -928,7 +940,7 @@ int main(int argc, char** argv) {
   }
   if (argc > 3 && std::string(argv[3]) == "z") {  // where the smoothing's vertex error lives
     std::string err;
-    NoiseAdaptiveSmoothingOptions o;
+    NoiseAdaptiveSmoothingOptions o = lab_options();
     Positions out;
     NoiseAdaptiveSmoothingReport r;
     if (!noise_adaptive_smooth(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); return 1; }
@@ -1030,13 +1042,8 @@ int main(int argc, char** argv) {
       }
     }
       for (double strength : strengths) {
-        NoiseAdaptiveSmoothingOptions o;
+        NoiseAdaptiveSmoothingOptions o = lab_options();
         o.strength = strength;
-        o.select_cutoff = !std::getenv("LAB_NOSELECT");
-        if (const char* cap = std::getenv("LAB_CAP")) o.tangential_cap = std::atof(cap);
-        if (const char* ms = std::getenv("LAB_MUSCALE")) o.mu_scale = std::atof(ms);
-        if (const char* wa = std::getenv("LAB_WEAKER")) o.weaker_allowed = std::atof(wa);
-        if (const char* g = std::getenv("LAB_FIRST")) o.first_order = std::atof(g);
         Positions out;
         NoiseAdaptiveSmoothingReport r;
         if (!noise_adaptive_smooth(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); return 1; }
@@ -1087,7 +1094,7 @@ int main(int argc, char** argv) {
   }
   if (argc > 3 && std::string(argv[3]) == "m") {
     std::string err;
-    NoiseAdaptiveSmoothingOptions o;
+    NoiseAdaptiveSmoothingOptions o = lab_options();
     Positions out;
     NoiseAdaptiveSmoothingReport r;
     noise_adaptive_smooth(noisy, f, o, out, r, err);
@@ -1151,7 +1158,7 @@ int main(int argc, char** argv) {
   if (argc > 3 && std::string(argv[3]) == "c") {
     std::string err;
     for (double strength : {0.3, 1.0}) {
-      NoiseAdaptiveSmoothingOptions o;
+      NoiseAdaptiveSmoothingOptions o = lab_options();
       o.strength = strength;
       Positions pre;
       NoiseAdaptiveSmoothingReport r;
