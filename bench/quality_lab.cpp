@@ -270,6 +270,17 @@ NoiseAdaptiveSmoothingOptions lab_options() {
   return o;
 }
 
+// The noise estimate the smoothing starts from, sigma / mean edge.
+double estimated_sigma(const Positions& p, const Faces& f) {
+  std::string err;
+  HamiltonianCycle cycle;
+  NoiseEstimate estimate;
+  if (!hamiltonian_cycle(f, static_cast<int>(p.rows()), CycleOptions{}, cycle, err) ||
+      !estimate_noise(p, f, cycle, EmdOptions{}, estimate, err))
+    std::printf("  noise estimate failed: %s\n", err.c_str());
+  return estimate.relative();
+}
+
 // Each face normal replaced by the area-weighted mean over the faces sharing a vertex with it,
 // each weighted further by exp(-|n_g - n_f|^2 / 2 w^2) (w = infinity: the plain mean).
 Positions averaged_face_normals(const Positions& p, const Faces& f, const std::vector<std::vector<int>>& faces_of, double width) {
@@ -644,8 +655,7 @@ int main(int argc, char** argv) {
     base.select_cutoff = false;
     Positions out;
     NoiseAdaptiveSmoothingReport r;
-    noise_adaptive_smooth(noisy, f, base, out, r, err);
-    const double sigma = r.sigma_used * h;
+    const double sigma = estimated_sigma(noisy, f) * h;
     const double alpha = std::getenv("LAB_ALPHA") ? std::atof(std::getenv("LAB_ALPHA")) : 0.5;
     const int draws = 3;
     std::vector<Positions> y1s, y2s;
@@ -685,13 +695,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (argc > 3 && std::string(argv[3]) == "P") {  // a cut-off per patch: oracle and cross-validation, against the global ones (raw filter)
-    std::string err;
-    NoiseAdaptiveSmoothingOptions base = lab_options();
-    base.select_cutoff = false;
-    Positions nas;
-    NoiseAdaptiveSmoothingReport r;
-    noise_adaptive_smooth(noisy, f, base, nas, r, err);
-    const double mu0 = base.mu_scale / std::sqrt(r.sigma_used);
+    const double mu0 = lab_options().mu_scale / std::sqrt(estimated_sigma(noisy, f));
     const double scale = 1.0 / h;
     const Positions v = noisy * scale;
     const Eigen::SparseMatrix<double> L = uniform_laplacian(f, n);
@@ -853,12 +857,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   if (argc > 3 && std::string(argv[3]) == "M") {  // order 2 against the mix of orders 1 and 2, both at mu = c / sqrt(sigma estimated), raw
-    std::string err;
-    NoiseAdaptiveSmoothingOptions base = lab_options();
-    base.select_cutoff = false;
-    Positions nas;
-    NoiseAdaptiveSmoothingReport r;
-    noise_adaptive_smooth(noisy, f, base, nas, r, err);
+    const double sigma = estimated_sigma(noisy, f);
     const double scale = 1.0 / h;
     const Positions v = noisy * scale;
     const Eigen::SparseMatrix<double> L = uniform_laplacian(f, n);
@@ -869,7 +868,7 @@ int main(int argc, char** argv) {
     for (int mixed = 0; mixed < 2; ++mixed) {
       std::printf("  %s:", mixed ? "mix" : "order2");
       for (double c : {0.14, 0.17, 0.2, 0.233, 0.27, 0.32, 0.38, 0.45}) {
-        const double mu = c / std::sqrt(r.sigma_used);
+        const double mu = c / std::sqrt(sigma);
         Eigen::SparseMatrix<double> A = Eigen::SparseMatrix<double>(A2 + (mixed ? mu * mu : 0.0) * A1) + std::pow(mu, 4) * I;
         Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
         Positions out(n, 3);
