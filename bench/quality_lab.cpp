@@ -880,6 +880,19 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "D") {  // the denoiser with the untangling's filter from LAB_UFIRST, LAB_USCALE
+    std::string err;
+    DenoiseOptions o;
+    if (const char* g = std::getenv("LAB_UFIRST")) o.untangle_first_order = std::atof(g);
+    if (const char* m = std::getenv("LAB_USCALE")) o.untangle_mu_scale = std::atof(m);
+    Positions out;
+    DenoiseReport r;
+    if (!feature_preserving_denoise(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); return 1; }
+    char name[80];
+    std::snprintf(name, sizeof name, "denoise (untangled %d, smoothed %d)", int(r.untangled), int(r.smoothed_instead));
+    show(name, out);
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "u") {  // the put-back of turned faces with limits wider than the shipped one
     std::string err;
     Positions nas;

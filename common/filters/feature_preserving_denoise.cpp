@@ -186,8 +186,8 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     NoiseAdaptiveSmoothingOptions smoothing;
     smoothing.noise = sigma;
     smoothing.select_cutoff = false;  // the noise level's cut-off: the refinement was measured from it
-    smoothing.first_order = kUntangleFirstOrder;
-    smoothing.mu_scale = kUntangleMuScale;
+    smoothing.first_order = options.untangle_first_order;
+    smoothing.mu_scale = options.untangle_mu_scale;
     NoiseAdaptiveSmoothingReport smoothing_report;
     Positions smoothed;
     if (!noise_adaptive_smooth(positions, faces, smoothing, smoothed, smoothing_report, error,

@@ -60,6 +60,8 @@ struct DenoiseOptions {
   bool paper_stage = false;     // the paper's divide-and-conquer HHT stage before the refinement
   double noise = 0;             // sigma / mean edge length; 0 or less: estimated
   bool untangle = true;         // start from the noise-adaptive smoothing when the input is tangled
+  double untangle_first_order = kUntangleFirstOrder;  // that smoothing's filter (experiments)
+  double untangle_mu_scale = kUntangleMuScale;
   bool smooth_surfaces_by_smoothing = true;  // no sharp creases (kCreaseContrast): the adaptive smoothing
                                              // (not with the paper's stage: that asks for the paper's method)
   bool detect_features = true;  // false: the torus-like case, no feature separation (Fig. 8)
