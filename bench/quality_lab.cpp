@@ -267,6 +267,7 @@ NoiseAdaptiveSmoothingOptions lab_options() {
   if (const char* ms = std::getenv("LAB_MUSCALE")) o.mu_scale = std::atof(ms);
   if (const char* wa = std::getenv("LAB_WEAKER")) o.weaker_allowed = std::atof(wa);
   if (const char* g = std::getenv("LAB_FIRST")) o.first_order = std::atof(g);
+  if (const char* b = std::getenv("LAB_CVBIAS")) o.selection_bias = std::atof(b);
   return o;
 }
 

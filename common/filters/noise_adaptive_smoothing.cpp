@@ -132,8 +132,8 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
     if (!select_cutoff(adjacency, v, smoothed_vertex_normals(v, faces, adjacency), search, selection, error,
                        [&](double done) { step(20 + static_cast<int>(10 * done), "Cut-off by cross-validation"); }))
       return false;
-    report.cutoff_selected = selection.mu < noise_cutoff;
-    report.mu = std::min(selection.mu, options.weaker_allowed * noise_cutoff) / std::sqrt(options.strength);
+    report.cutoff_selected = selection.mu / options.selection_bias < noise_cutoff;
+    report.mu = std::min(selection.mu / options.selection_bias, options.weaker_allowed * noise_cutoff) / std::sqrt(options.strength);
     report.selection_iterations = selection.iterations;
     report.selection_vertices = selection.sampled_vertices;
     clock.done("cut-off selection");

@@ -12,7 +12,9 @@
 //      * sigma), sigma in mean edges, or a stronger one where generalized cross-validation finds
 //      it better (cutoff_selection.h): the best cut-off depends on the surface as well as on the
 //      noise, and a dense smooth mesh takes a much stronger filter than a coarse detailed one
-//      (select_cutoff; the filter turns it off when the user gives the noise level).
+//      (select_cutoff; the filter turns it off when the user gives the noise level); its choice
+//      is made kSelectionBias stronger, since its squared risk favours weaker filters than the
+//      angle error does.
 //   3. each vertex's move along its tangent plane is capped at kTangentialCap * sigma^2 mean
 //      edges: the uniform Laplacian also slides vertices of an irregular (clean) triangulation
 //      towards their neighbours' centroid, which is no noise; tangential noise is of the order
@@ -54,6 +56,9 @@ constexpr double kMoveRadius = 4.0;
 // A face the smoothing turned over goes back if, put back, it is within this of the smoothed
 // surface (degrees).
 constexpr double kRestoredFaceTilt = 60.0;
+// The cross-validated cut-off is divided by this: its squared risk has its minimum at a weaker
+// filter than the mean angle error's (docs/quality.md items 5 and 10).
+constexpr double kSelectionBias = 1.2;
 // The weakest cut-off the cross-validation scores, relative to the noise level's (docs/quality.md).
 constexpr double kWeakestSearched = 1.5;
 // The strongest: the noise level's cut-off divided by this.
@@ -67,13 +72,15 @@ struct NoiseAdaptiveSmoothingOptions {
   double strength = 1;         // > 1 smooths more, < 1 less
   double mu = 0;               // > 0: this cut-off instead of the one the noise sets (experiments)
   bool select_cutoff = true;   // a stronger cut-off than the noise level's where cross-validation finds one
-  // Experiments (bench/quality_lab, docs/quality.md items 8 and 9): the tangential cap's factor
+  // Experiments (bench/quality_lab, docs/quality.md items 8-10): the tangential cap's factor
   // (infinity: no cap), the noise law's scale, how much weaker than the noise law's cut-off the
-  // cross-validation may choose, and the low-pass's first-order weight (0: second order only).
+  // cross-validation may choose, the low-pass's first-order weight (0: second order only), and
+  // the bias applied to the cross-validated cut-off (1: none).
   double tangential_cap = kTangentialCap;
   double mu_scale = kMuScale;
   double weaker_allowed = 1;
   double first_order = kFirstOrder;
+  double selection_bias = kSelectionBias;
   CycleOptions cycle;
   EmdOptions emd;
 };

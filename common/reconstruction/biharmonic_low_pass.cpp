@@ -65,21 +65,18 @@ bool biharmonic_low_pass(const VertexAdjacency& input_adjacency, const Positions
   const double first_order_weight = first_order * mu * mu;
   Positions a, b, c;  // work vectors of the product, reused
   // out = K D^-1 K D^-2 K D^-1 K y + first_order mu^2 K D^-2 K y + mu^4 y
-  //     = ((L^2)^T L^2 + first_order mu^2 L^T L + mu^4 I) y
+  //     = K (D^-1 K D^-2 K D^-1 a + first_order mu^2 D^-2 a) + mu^4 y,  a = K y
+  //     = ((L^2)^T L^2 + first_order mu^2 L^T L + mu^4 I) y: four sweeps either way
   auto apply = [&](const Positions& y, Positions& out) {
     apply_graph_laplacian(adjacency, y, a);
-    if (first_order_weight > 0) {
-      b = inverse_valence_squared.asDiagonal() * a;
-      apply_graph_laplacian(adjacency, b, c);
-    }
-    a = inverse_valence.asDiagonal() * a;
-    apply_graph_laplacian(adjacency, a, b);
-    b = inverse_valence_squared.asDiagonal() * b;
-    apply_graph_laplacian(adjacency, b, a);
-    a = inverse_valence.asDiagonal() * a;
-    apply_graph_laplacian(adjacency, a, out);
+    b = inverse_valence.asDiagonal() * a;
+    apply_graph_laplacian(adjacency, b, c);
+    c = inverse_valence_squared.asDiagonal() * c;
+    apply_graph_laplacian(adjacency, c, b);
+    b = inverse_valence.asDiagonal() * b;
+    if (first_order_weight > 0) b += first_order_weight * (inverse_valence_squared.asDiagonal() * a);
+    apply_graph_laplacian(adjacency, b, out);
     out += mu4 * y;
-    if (first_order_weight > 0) out += first_order_weight * c;
   };
 
   x = v;

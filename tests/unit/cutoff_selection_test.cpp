@@ -112,5 +112,25 @@ TEST(CutoffSelection, StrengthensTheSmoothingOfADenseSmoothSurface) {
   EXPECT_LT(error_degrees[1], 0.85 * error_degrees[0]);
 }
 
+// The cross-validated cut-off is made kSelectionBias stronger than the score's minimum (its squared
+// risk favours weaker filters than the angle error does).
+TEST(CutoffSelection, TheSmoothingTakesTheChoiceBiasedStronger) {
+  const test::ArrayMesh m = test::sphere(5);
+  const Positions noisy = add_gaussian_noise(m.positions, m.faces, 10, NoiseDirection::Isotropic, 8);
+  double mu[2];
+  for (int biased = 0; biased < 2; ++biased) {
+    NoiseAdaptiveSmoothingOptions options;
+    if (!biased) options.selection_bias = 1;
+    NoiseAdaptiveSmoothingReport report;
+    Positions out;
+    std::string error;
+    ASSERT_TRUE(noise_adaptive_smooth(noisy, m.faces, options, out, report, error)) << error;
+    ASSERT_TRUE(report.cutoff_selected);
+    mu[biased] = report.mu;
+  }
+  EXPECT_GT(kSelectionBias, 1.0);
+  EXPECT_NEAR(mu[1], mu[0] / kSelectionBias, 1e-9 * mu[0]);
+}
+
 }  // namespace
 }  // namespace hht
