@@ -89,6 +89,14 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
     error = "the strength must be a positive number";
     return false;
   }
+  // The experiment fields: a negative first-order weight or a non-positive scale would make the
+  // solve's matrix singular or indefinite.
+  auto positive = [](double x) { return x > 0 && std::isfinite(x); };
+  if (!positive(options.mu_scale) || !positive(options.selection_bias) || !positive(options.weaker_allowed) ||
+      !(options.tangential_cap >= 0) || !(options.first_order >= 0) || !std::isfinite(options.first_order)) {
+    error = "the smoothing's filter settings are out of range (scale, bias and weaker limit positive, cap and first-order weight not negative)";
+    return false;
+  }
   const int n = static_cast<int>(positions.rows());
   const double edge = mean_edge_length(positions, faces);
   if (!(edge > 0)) {
@@ -132,8 +140,9 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
     if (!select_cutoff(adjacency, v, smoothed_vertex_normals(v, faces, adjacency), search, selection, error,
                        [&](double done) { step(20 + static_cast<int>(10 * done), "Cut-off by cross-validation"); }))
       return false;
-    report.cutoff_selected = selection.mu / options.selection_bias < noise_cutoff;
-    report.mu = std::min(selection.mu / options.selection_bias, options.weaker_allowed * noise_cutoff) / std::sqrt(options.strength);
+    const double chosen = selection.mu / options.selection_bias;
+    report.cutoff_selected = chosen < noise_cutoff;
+    report.mu = std::min(chosen, options.weaker_allowed * noise_cutoff) / std::sqrt(options.strength);
     report.selection_iterations = selection.iterations;
     report.selection_vertices = selection.sampled_vertices;
     clock.done("cut-off selection");

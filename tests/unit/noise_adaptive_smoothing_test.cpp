@@ -188,6 +188,16 @@ TEST(NoiseAdaptiveSmoothing, RefusesBadOptionsAndInput) {
   o.strength = 0;
   EXPECT_FALSE(noise_adaptive_smooth(s.positions, s.faces, o, out, report, error));
   EXPECT_NE(error.find("strength"), std::string::npos);
+  for (int bad = 0; bad < 4; ++bad) {  // the filter's experiment fields
+    NoiseAdaptiveSmoothingOptions f;
+    if (bad == 0) f.first_order = -1;
+    if (bad == 1) f.mu_scale = 0;
+    if (bad == 2) f.selection_bias = std::nan("");
+    if (bad == 3) f.tangential_cap = -1;
+    error.clear();
+    EXPECT_FALSE(noise_adaptive_smooth(s.positions, s.faces, f, out, report, error)) << bad;
+    EXPECT_NE(error.find("out of range"), std::string::npos) << bad;
+  }
   s.positions(0, 0) = std::nan("");
   EXPECT_FALSE(noise_adaptive_smooth(s.positions, s.faces, {}, out, report, error));
   EXPECT_FALSE(noise_adaptive_smooth(s.positions, Faces(0, 3), {}, out, report, error));
