@@ -23,6 +23,7 @@
 #include <cstdio>
 #include <random>
 #include <map>
+#include <set>
 #include <algorithm>
 
 using namespace hht;
@@ -881,17 +882,55 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "Q") {  // the refinement's rounds: how far each moves the mesh
+    std::string err;
+    Positions prev;
+    for (int rounds = 1; rounds <= 5; ++rounds) {
+      DenoiseOptions o;
+      o.refine_rounds = rounds;
+      Positions out;
+      DenoiseReport r;
+      if (!feature_preserving_denoise(noisy, f, o, out, r, err)) return 1;
+      const double unit = r.sigma_used * h;
+      const double step = rounds == 1 ? 0 : std::sqrt((out - prev).rowwise().squaredNorm().mean()) / unit;
+      const double from = std::sqrt((out - noisy).rowwise().squaredNorm().mean()) / unit;
+      char name[80];
+      std::snprintf(name, sizeof name, "rounds %d step %.3f from-noisy %.3f", rounds, step, from);
+      show(name, out);
+      prev = out;
+    }
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "D") {  // the denoiser with the untangling's filter from LAB_UFIRST, LAB_USCALE
     std::string err;
     DenoiseOptions o;
     if (const char* g = std::getenv("LAB_UFIRST")) o.untangle_first_order = std::atof(g);
     if (const char* m = std::getenv("LAB_USCALE")) o.untangle_mu_scale = std::atof(m);
+    if (const char* x = std::getenv("LAB_RSIGMA")) o.refine_normal_sigma = std::atof(x);
+    if (const char* x = std::getenv("LAB_RPASSES")) o.refine_normal_passes = std::atoi(x);
+    if (const char* x = std::getenv("LAB_RITER")) o.refine_vertex_iterations = std::atoi(x);
+    if (const char* x = std::getenv("LAB_ROUNDS")) o.refine_rounds = std::atoi(x);
+    if (std::getenv("LAB_NOUNTANGLE")) o.untangle = false;
+    if (const char* x = std::getenv("LAB_STOPSTEP")) o.refine_stop_step = std::atof(x);
+    if (const char* x = std::getenv("LAB_MAXFACTOR")) o.refine_max_rounds_factor = std::atof(x);
+    if (const char* x = std::getenv("LAB_EXTRASTEP")) o.refine_extra_step = std::atof(x);
+    if (const char* x = std::getenv("LAB_URINGS")) o.untangle_rings = std::atoi(x);
+    if (const char* x = std::getenv("LAB_UANGLE")) o.untangle_cosine = std::cos(std::atof(x) * M_PI / 180);
     Positions out;
     DenoiseReport r;
     if (!feature_preserving_denoise(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); return 1; }
     char name[80];
-    std::snprintf(name, sizeof name, "denoise (untangled %d, smoothed %d)", int(r.untangled), int(r.smoothed_instead));
+    std::snprintf(name, sizeof name, "denoise (u%d s%d sig %.3f r%d p%d fl%.4f sc%.2f)", int(r.untangled), int(r.smoothed_instead),
+                  r.sigma_used, r.refine_rounds, r.refine_normal_passes, double(r.flipped_faces) / f.rows(), r.refine_scaled);
     show(name, out);
+    std::printf("  steps");
+    for (double st : r.refine_steps) std::printf(" %.3f", st);
+    std::printf("\n");
+    if (std::getenv("LAB_GUIDED")) {
+      Positions g;
+      guided_normal_denoise(noisy, f, GuidedNormalDenoiseOptions{}, g, err);
+      show("guided", g);
+    }
     return 0;
   }
   if (argc > 3 && std::string(argv[3]) == "u") {  // the put-back of turned faces with limits wider than the shipped one
@@ -906,6 +945,55 @@ int main(int argc, char** argv) {
       Positions out = nas;
       const int restored = restore_turned_faces_that_fit(noisy, f, limit, out);
       std::snprintf(name, sizeof name, "+ put back within %.0f (%d)", limit, restored);
+      show(name, out);
+    }
+    // Partial put-back: the smallest share of the way back that un-turns the face without turning
+    // a neighbour or pointing one against the smoothed surface.
+    for (double limit : {20.0, 30.0, 45.0, 60.0}) {
+      Positions out = nas;
+      const Positions in_n = area_weighted_vertex_normals(noisy, f), surf = area_weighted_vertex_normals(nas, f);
+      std::vector<std::vector<int>> fo(n);
+      for (Eigen::Index i = 0; i < f.rows(); ++i)
+        for (int k = 0; k < 3; ++k) fo[f(i, k)].push_back(int(i));
+      auto av = [&](const Positions& p, Eigen::Index i) {
+        Eigen::RowVector3d a = p.row(f(i, 0));
+        return Eigen::RowVector3d((p.row(f(i, 1)) - a).cross(p.row(f(i, 2)) - a));
+      };
+      auto around = [&](const Positions& nn, Eigen::Index i) {
+        return Eigen::RowVector3d(nn.row(f(i, 0)) + nn.row(f(i, 1)) + nn.row(f(i, 2)));
+      };
+      auto turned = [&](const Positions& p, Eigen::Index i) { return av(noisy, i).dot(av(p, i)) < 0; };
+      const double cmin = std::cos(limit * M_PI / 180);
+      int fixed = 0;
+      for (int pass = 0; pass < 4; ++pass) {
+        const int before = fixed;
+        for (Eigen::Index i = 0; i < f.rows(); ++i) {
+          if (av(noisy, i).squaredNorm() == 0 || !turned(out, i)) continue;
+          if (av(noisy, i).dot(around(in_n, i)) < 0) continue;
+          std::set<int> ring;
+          for (int k = 0; k < 3; ++k)
+            for (int g : fo[f(i, k)]) ring.insert(g);
+          std::map<int, bool> was;
+          for (int g : ring) was[g] = turned(out, g);
+          Eigen::Matrix3d kept;
+          for (int k = 0; k < 3; ++k) kept.row(k) = out.row(f(i, k));
+          bool ok = false;
+          for (int step = 1; step <= 20 && !ok; ++step) {
+            const double t = step / 20.0;
+            for (int k = 0; k < 3; ++k) out.row(f(i, k)) = kept.row(k) + t * (noisy.row(f(i, k)) - kept.row(k));
+            if (turned(out, i)) continue;
+            ok = true;
+            const Eigen::RowVector3d a = av(out, i), s = around(surf, i);
+            if (a.dot(s) < cmin * a.norm() * s.norm()) ok = false;
+            for (int g : ring)
+              if (g != i && ((!was[g] && turned(out, g)) || av(out, g).dot(around(surf, g)) < 0)) ok = false;
+          }
+          if (ok) ++fixed;
+          else for (int k = 0; k < 3; ++k) out.row(f(i, k)) = kept.row(k);
+        }
+        if (fixed == before) break;
+      }
+      std::snprintf(name, sizeof name, "+ partial within %.0f (%d)", limit, fixed);
       show(name, out);
     }
     return 0;

@@ -62,6 +62,8 @@ struct DenoiseOptions {
   bool untangle = true;         // start from the noise-adaptive smoothing when the input is tangled
   double untangle_first_order = kUntangleFirstOrder;  // that smoothing's filter (experiments)
   double untangle_mu_scale = kUntangleMuScale;
+  double untangle_cosine = 0;
+  int untangle_rings = -1;      // experiment: <0 the whole smoothed mesh is the start; k: only around flipped faces
   bool smooth_surfaces_by_smoothing = true;  // no sharp creases (kCreaseContrast): the adaptive smoothing
                                              // (not with the paper's stage: that asks for the paper's method)
   bool detect_features = true;  // false: the torus-like case, no feature separation (Fig. 8)
@@ -82,6 +84,9 @@ struct DenoiseOptions {
   int refine_normal_passes = 8;       // guided normal filtering passes per round; 0: no refinement
   double refine_normal_sigma = 0.25;  // range width of that filter, on unit normals (~15 degrees)
   int refine_vertex_iterations = 20;  // vertex update iterations towards the filtered normals
+  double refine_stop_step = 0;        // experiment
+  double refine_extra_step = 0;       // experiment
+  double refine_max_rounds_factor = 1;  // experiment
 };
 
 struct DenoiseReport {
@@ -92,6 +97,7 @@ struct DenoiseReport {
   double crease_contrast = 0;  // of that smoothing (0: not measured)
   bool smoothed_instead = false;  // no sharp creases: the result is the adaptive smoothing
   int refine_rounds = 0;
+  std::vector<double> refine_steps;  // RMS move of each round after the first, in sigma * mean edge
   int refine_normal_passes = 0;  // per round, as used
   double refine_scaled = 1;      // < 1: the refinement's move was scaled down to the noise's RMS
   bool features_detected = false;  // report.type and feature_lines hold the input's features
