@@ -911,11 +911,9 @@ int main(int argc, char** argv) {
     if (const char* x = std::getenv("LAB_RITER")) o.refine_vertex_iterations = std::atoi(x);
     if (const char* x = std::getenv("LAB_ROUNDS")) o.refine_rounds = std::atoi(x);
     if (std::getenv("LAB_NOUNTANGLE")) o.untangle = false;
-    if (const char* x = std::getenv("LAB_STOPSTEP")) o.refine_stop_step = std::atof(x);
-    if (const char* x = std::getenv("LAB_MAXFACTOR")) o.refine_max_rounds_factor = std::atof(x);
-    if (const char* x = std::getenv("LAB_EXTRASTEP")) o.refine_extra_step = std::atof(x);
-    if (const char* x = std::getenv("LAB_URINGS")) o.untangle_rings = std::atoi(x);
-    if (const char* x = std::getenv("LAB_UANGLE")) o.untangle_cosine = std::cos(std::atof(x) * M_PI / 180);
+    if (const char* x = std::getenv("LAB_DRIFTSTEP")) o.refine_drift_step = std::atof(x);
+    if (const char* x = std::getenv("LAB_EXTRAFACTOR")) o.refine_extra_rounds_factor = std::atof(x);
+    if (const char* x = std::getenv("LAB_CONVERGEDSTEP")) o.refine_converged_step = std::atof(x);
     Positions out;
     DenoiseReport r;
     if (!feature_preserving_denoise(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); return 1; }

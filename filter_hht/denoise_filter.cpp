@@ -38,7 +38,10 @@ void declare(const MeshDocument&, RichParameterList& p) {
                       "rounded edges. Ignored with the paper's stage on."));
   p.addParam(RichInt("refineRounds", d.refine_rounds, "Refinement rounds (0 = by the noise)",
                      "Rounds of guided normal filtering and vertex update (0 to 100); 0 takes one per 10% of noise "
-                     "(below 5%, one round of proportionally fewer passes, so a clean mesh is barely touched)."));
+                     "(below 5%, one round of proportionally fewer passes, so a clean mesh is barely touched), stops "
+                     "early at a round that moves the mesh by more than 0.18 noise sigmas (it would facet curved "
+                     "parts) and adds up to half as many again while each moves it by less than 0.1 (converging "
+                     "onto flat parts)."));
   p.addParam(RichInt("refineNormalPasses", d.refine_normal_passes, "Refinement: normal filtering passes",
                      "Guided normal filtering passes (which keep creases) per round before the vertices are fitted to "
                      "the normals (0 to 1000). 0: no refinement (with the paper's stage on, the paper's method "
@@ -180,13 +183,25 @@ bool apply(FilterRun& run) {
     run.log(QString("  crease contrast of the smoothed mesh %1 (below %2: no sharp creases)%3")
                 .arg(report.crease_contrast, 0, 'f', 1).arg(hht::kCreaseContrast)
                 .arg(report.smoothed_instead ? "; the result is the adaptive smoothing (cross-validated cut-off)" : ""));
-  if (report.smoothed_instead)
+  if (report.smoothed_instead) {
     run.log("  no refinement (the surface has no sharp creases)");
-  else if (report.refine_normal_passes > 0 && o.refine_vertex_iterations > 0)
+  } else if (report.refine_normal_passes > 0 && o.refine_vertex_iterations > 0) {
     run.log(QString("  refinement: %1 round(s) of %2 guided normal filtering passes and %3 vertex update iterations")
                 .arg(report.refine_rounds).arg(report.refine_normal_passes).arg(o.refine_vertex_iterations));
-  else
+    if (!report.refine_steps.empty()) {
+      QStringList moves;
+      for (double m : report.refine_steps) moves << QString::number(m, 'f', 3);
+      const bool cut = report.refine_rounds < int(report.refine_steps.size()) + 1;
+      run.log(QString("  rounds: %1 set by the noise; moves of rounds 2 on (noise sigmas): %2%3")
+                  .arg(report.refine_rounds_asked).arg(moves.join(", "))
+                  .arg(!cut ? QString()
+                       : report.refine_rounds < report.refine_rounds_asked
+                           ? QString("; the last drifted (above %1) and was undone").arg(o.refine_drift_step)
+                           : QString("; the last did not converge (above %1) and was undone").arg(o.refine_converged_step)));
+    }
+  } else {
     run.log("  no refinement");
+  }
   run.log(stage_times_line(report.stages));
   return true;
 }

@@ -3,7 +3,6 @@
 #include "mesh/crease_contrast.h"
 
 #include "mesh/mesh_checks.h"
-#include "mesh/vertex_adjacency.h"
 #include "evaluation/gaussian_noise.h"
 #include "filters/guided_normal_denoise.h"
 #include "reconstruction/normal_vertex_update.h"
@@ -149,6 +148,11 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
   auto step = [&](int percent, const char* what) {
     if (progress) progress(percent, what);
   };
+  if (!(options.refine_drift_step > 0) || !(options.refine_converged_step >= 0) ||
+      !(options.refine_extra_rounds_factor >= 1 && options.refine_extra_rounds_factor <= 10)) {
+    error = "refinement round rule out of range: drift step above 0, converged step at least 0, extra rounds factor 1 to 10";
+    return false;
+  }
   if (!check_triangle_mesh(positions, faces, error)) return false;
   const int n = static_cast<int>(positions.rows());
 
@@ -194,34 +198,15 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     if (!noise_adaptive_smooth(positions, faces, smoothing, smoothed, smoothing_report, error,
                                [&](int percent, const char*) { step(8 + 22 * percent / 100, "Untangling: noise-adaptive smoothing"); }))
       return false;
-    std::vector<double> weight(n, 0.0);
     for (Eigen::Index f = 0; f < faces.rows(); ++f) {
       const auto normal = [&](const Positions& p) {
         const Eigen::RowVector3d a = p.row(faces(f, 0));
         return Eigen::RowVector3d((p.row(faces(f, 1)) - a).cross(p.row(faces(f, 2)) - a));
       };
-      const Eigen::RowVector3d a = normal(positions), b = normal(smoothed);
-      const bool flipped = a.dot(b) < 0;
-      report.flipped_faces += flipped;
-      if (a.dot(b) < options.untangle_cosine * a.norm() * b.norm())
-        for (int k = 0; k < 3; ++k) weight[faces(f, k)] = 1;
+      report.flipped_faces += normal(positions).dot(normal(smoothed)) < 0;
     }
     report.untangled = options.untangle && report.flipped_faces > kTangledShare * static_cast<double>(faces.rows());
-    if (report.untangled && options.untangle_rings < 0) start = smoothed;
-    if (report.untangled && options.untangle_rings >= 0) {
-      const VertexAdjacency adjacency = vertex_adjacency(faces, n);
-      const int rings = options.untangle_rings;
-      for (int r = 1; r <= rings; ++r) {
-        const double w = 1.0 - double(r) / (rings + 1);
-        std::vector<double> next = weight;
-        for (int i = 0; i < n; ++i)
-          if (weight[i] == 0)
-            for (const int* j = adjacency.begin(i); j != adjacency.end(i); ++j)
-              if (weight[*j] > w) next[i] = std::max(next[i], w);
-        weight.swap(next);
-      }
-      for (int i = 0; i < n; ++i) start.row(i) += weight[i] * (smoothed.row(i) - positions.row(i));
-    }
+    if (report.untangled) start = smoothed;
     clock.done("untangling");
     // A surface without sharp creases (organic): the guided refinement, made for creases, would
     // facet it; the adaptive smoothing with its cross-validated cut-off is the better result.
@@ -248,9 +233,10 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
   // Below half a round's noise, one round with passes in proportion to the noise: light noise
   // (Fandisk at 5%) is still cleaned, a clean curved mesh is not faceted.
   int normal_passes = options.refine_normal_passes;
-  report.refine_rounds = options.refine_rounds;
-  if (report.refine_rounds <= 0) {
-    report.refine_rounds = std::max(1, static_cast<int>(std::lround(sigma / kNoisePerRound)));
+  const bool rounds_by_noise = options.refine_rounds <= 0;
+  report.refine_rounds_asked = options.refine_rounds;
+  if (rounds_by_noise) {
+    report.refine_rounds_asked = std::max(1, static_cast<int>(std::lround(sigma / kNoisePerRound)));
     if (sigma < 0.5 * kNoisePerRound)
       normal_passes = static_cast<int>(std::lround(normal_passes * sigma / (0.5 * kNoisePerRound)));
   }
@@ -265,24 +251,26 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     refine.vertex_iterations = options.refine_vertex_iterations;
     const double edge = mean_edge_length(positions, faces);
     const Positions rebuilt = result;
-    const int max_rounds = options.refine_stop_step > 0 ? std::max(1, static_cast<int>(std::lround(options.refine_max_rounds_factor * report.refine_rounds))) : report.refine_rounds;
-    int done_rounds = 0;
+    // Rounds set by the noise end early at one that drifts, and go on (up to kExtraRoundsFactor times
+    // as many) while each converges (kRoundDriftStep, kRoundConvergedStep); a given count is done as is.
+    const int asked = report.refine_rounds_asked;
+    const int max_rounds =
+        rounds_by_noise ? std::max(asked, static_cast<int>(std::lround(options.refine_extra_rounds_factor * asked))) : asked;
     for (int round = 0; round < max_rounds; ++round) {
       Positions next;
       if (!guided_normal_denoise(result, faces, refine, next, error, [&](double done) {
-            step(from + static_cast<int>((99 - from) * (round + done) / max_rounds), "Refinement: guided normal filtering and vertex update");
+            step(from + static_cast<int>((99 - from) * (round + done) / max_rounds),
+                 "Refinement: guided normal filtering and vertex update");
           }))
         return false;
-      if (round > 0) {
-        const double moved_now = std::sqrt((next - result).rowwise().squaredNorm().mean()) / (sigma * edge);
-        report.refine_steps.push_back(moved_now);
-        if (options.refine_stop_step > 0 && moved_now > options.refine_stop_step) break;
-        if (options.refine_extra_step > 0 && round >= report.refine_rounds && moved_now > options.refine_extra_step) break;
+      if (round > 0 && rounds_by_noise && sigma * edge > 0) {
+        const double moved = std::sqrt((next - result).rowwise().squaredNorm().mean()) / (sigma * edge);
+        report.refine_steps.push_back(moved);
+        if (moved > (round < asked ? options.refine_drift_step : options.refine_converged_step)) break;
       }
       result.swap(next);
-      ++done_rounds;
+      ++report.refine_rounds;
     }
-    report.refine_rounds = done_rounds;
     // Discrepancy bound: the refinement removes noise, so it may move vertices by about the
     // noise's RMS and no more; more is the guided filter faceting curved parts of the surface.
     const double allowed = kRefineMoveToNoise * std::sqrt(3.0) * sigma * edge;

@@ -40,6 +40,17 @@ constexpr double kTangledShare = 0.0075;
 // clean curved mesh is not faceted (clean homer: 9.2 degrees with a full round).
 constexpr double kNoisePerRound = 0.1;
 
+// The refinement's rounds (when set by the noise) are cut short and extended by how far each
+// moves the mesh (RMS, in sigma * mean edge), measured after the first: a round of the noise's
+// count that moves it by more than kRoundDriftStep is undone and ends the refinement (the guided
+// filter re-faceting curved parts of an irregular mesh: each such round adds error on turbine
+// and anchor_dense); after that count, up to kExtraRoundsFactor times as many rounds go on while
+// each moves it by less than kRoundConvergedStep (converging onto flat pieces: cube, blade).
+// docs/quality.md item 11.
+constexpr double kRoundDriftStep = 0.18;
+constexpr double kRoundConvergedStep = 0.10;
+constexpr double kExtraRoundsFactor = 1.5;
+
 // The refinement may move vertices by at most this times the noise's RMS (sqrt(3) sigma); a
 // larger move is scaled down to it.
 constexpr double kRefineMoveToNoise = 0.75;
@@ -62,8 +73,6 @@ struct DenoiseOptions {
   bool untangle = true;         // start from the noise-adaptive smoothing when the input is tangled
   double untangle_first_order = kUntangleFirstOrder;  // that smoothing's filter (experiments)
   double untangle_mu_scale = kUntangleMuScale;
-  double untangle_cosine = 0;
-  int untangle_rings = -1;      // experiment: <0 the whole smoothed mesh is the start; k: only around flipped faces
   bool smooth_surfaces_by_smoothing = true;  // no sharp creases (kCreaseContrast): the adaptive smoothing
                                              // (not with the paper's stage: that asks for the paper's method)
   bool detect_features = true;  // false: the torus-like case, no feature separation (Fig. 8)
@@ -80,13 +89,13 @@ struct DenoiseOptions {
     o.lambda = 1.0;
     return o;
   }();
-  int refine_rounds = 0;              // 0: set by the noise (kNoisePerRound)
+  int refine_rounds = 0;              // 0: set by the noise (kNoisePerRound) and by each round's move
   int refine_normal_passes = 8;       // guided normal filtering passes per round; 0: no refinement
   double refine_normal_sigma = 0.25;  // range width of that filter, on unit normals (~15 degrees)
   int refine_vertex_iterations = 20;  // vertex update iterations towards the filtered normals
-  double refine_stop_step = 0;        // experiment
-  double refine_extra_step = 0;       // experiment
-  double refine_max_rounds_factor = 1;  // experiment
+  double refine_drift_step = kRoundDriftStep;        // with rounds set by the noise (experiments)
+  double refine_converged_step = kRoundConvergedStep;
+  double refine_extra_rounds_factor = kExtraRoundsFactor;
 };
 
 struct DenoiseReport {
@@ -96,8 +105,10 @@ struct DenoiseReport {
   int flipped_faces = 0;       // input faces flipped against that smoothing
   double crease_contrast = 0;  // of that smoothing (0: not measured)
   bool smoothed_instead = false;  // no sharp creases: the result is the adaptive smoothing
-  int refine_rounds = 0;
-  std::vector<double> refine_steps;  // RMS move of each round after the first, in sigma * mean edge
+  int refine_rounds_asked = 0;   // given, or set by the noise
+  int refine_rounds = 0;         // done
+  std::vector<double> refine_steps;  // with rounds set by the noise: the move of each round after the
+                                     // first (RMS, in sigma * mean edge), the last one undone if it ended them
   int refine_normal_passes = 0;  // per round, as used
   double refine_scaled = 1;      // < 1: the refinement's move was scaled down to the noise's RMS
   bool features_detected = false;  // report.type and feature_lines hold the input's features
