@@ -1,6 +1,8 @@
 // Scratch lab for the smoothing quality work (issue 7): noisy copies of a clean mesh, several
 // candidate smoothers, E_a / RMS / flips against the clean mesh.
 #include "bench_util.h"
+#include "signal/emd.h"
+#include "cycle/hamiltonian_cycle.h"
 #include "cycle/cycle_decomposition.h"
 #include "cycle/cycle_signal.h"
 #include "signal/noise_estimate.h"
@@ -882,6 +884,100 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "H") {  // the smoothing's move against the noise's RMS, and scaled back to it
+    std::string err;
+    Positions nas;
+    NoiseAdaptiveSmoothingReport r;
+    noise_adaptive_smooth(noisy, f, lab_options(), nas, r, err);
+    const double noise_rms = std::sqrt(3.0) * r.sigma_used * h;
+    const double moved = std::sqrt((nas - noisy).rowwise().squaredNorm().mean());
+    char name[80];
+    std::snprintf(name, sizeof name, "NAS (move / noise RMS %.3f, sigma %.3f)", moved / noise_rms, r.sigma_used);
+    show(name, nas);
+    for (double c : {1.0, 0.9, 0.8}) {
+      if (moved <= c * noise_rms) continue;
+      Positions out = noisy + (nas - noisy) * (c * noise_rms / moved);
+      std::snprintf(name, sizeof name, "scaled to %.1f of the noise RMS", c);
+      show(name, out);
+    }
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[3]) == "T") {  // does the refinement from the noisy mesh leave it tangled?
+    std::string err;
+    DenoiseOptions o;
+    Positions with, without;
+    DenoiseReport r1, r2;
+    feature_preserving_denoise(noisy, f, o, with, r1, err);
+    o.untangle = false;
+    feature_preserving_denoise(noisy, f, o, without, r2, err);
+    NoiseAdaptiveSmoothingOptions s;
+    s.noise = r1.sigma_used;
+    s.select_cutoff = false;
+    s.first_order = kUntangleFirstOrder;
+    s.mu_scale = kUntangleMuScale;
+    Positions smoothed;
+    NoiseAdaptiveSmoothingReport sr;
+    noise_adaptive_smooth(noisy, f, s, smoothed, sr, err);
+    auto share = [&](const Positions& p) {
+      const Positions a = face_normals(p, f), b = face_normals(smoothed, f);
+      int c = 0;
+      for (Eigen::Index i = 0; i < f.rows(); ++i) c += a.row(i).dot(b.row(i)) < 0;
+      return double(c) / f.rows();
+    };
+    char name[100];
+    std::snprintf(name, sizeof name, "untangled %d (input share %.4f)", int(r1.untangled), share(noisy));
+    show(name, with);
+    std::snprintf(name, sizeof name, "from noisy (result share %.4f)", share(without));
+    show(name, without);
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[3]) == "N") {  // the noise estimate over the vertices with the shortest edges
+    std::string err;
+    for (int which = 0; which < 2; ++which) {
+      const Positions& p = which == 0 ? clean : noisy;
+      HamiltonianCycle cycle;
+      hamiltonian_cycle(f, n, CycleOptions{}, cycle, err);
+      const VertexAdjacency adj = vertex_adjacency(f, n);
+      const Eigen::VectorXd hts = one_ring_heights(p, f, adj);
+      const double edge = mean_edge_length(p, f);
+      std::vector<double> local(n, 0.0);
+      for (int i = 0; i < n; ++i) {
+        for (const int* j = adj.begin(i); j != adj.end(i); ++j) local[i] += (p.row(*j) - p.row(i)).norm();
+        if (adj.valence(i) > 0) local[i] /= adj.valence(i);
+      }
+      std::vector<double> sorted = local;
+      std::sort(sorted.begin(), sorted.end());
+      std::printf("  %s:", which == 0 ? "clean" : "noisy");
+      for (double q : {1.0, 0.5, 0.25}) {
+        const double limit = sorted[std::min<size_t>(sorted.size() - 1, size_t(q * (sorted.size() - 1)))];
+        std::vector<double> finest;
+        double inv = 0;
+        const auto segments = signals_along_cycle(cycle, hts);
+        for (size_t sg = 0; sg < segments.size(); ++sg) {
+          EmdOptions o;
+          o.max_imfs = 1;
+          const EmdResult e = emd(segments[sg], o);
+          if (e.imfs.empty()) continue;
+          for (size_t t = 0; t < segments[sg].size(); ++t) {
+            const int v = cycle.order[cycle.segment_begin[sg] + static_cast<int>(t)];
+            if (adj.boundary[v] || adj.valence(v) == 0 || local[v] > limit) continue;
+            finest.push_back(e.imfs[0][t]);
+            inv += 1.0 / adj.valence(v);
+          }
+        }
+        const int m = finest.size();
+        std::vector<double> c2 = finest;
+        std::nth_element(c2.begin(), c2.begin() + m / 2, c2.end());
+        const double centre = c2[m / 2];
+        for (double& x : finest) x = std::abs(x - centre);
+        std::nth_element(finest.begin(), finest.begin() + m / 2, finest.end());
+        const double sig = finest[m / 2] / 0.6745 / std::sqrt(1 + inv / m) / edge;
+        std::printf("  q%.2f sigma %.3f (local edge <= %.2f)", q, sig, limit / edge);
+      }
+      std::printf("\n");
+    }
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "Q") {  // the refinement's rounds: how far each moves the mesh
     std::string err;
     Positions prev;
@@ -914,6 +1010,7 @@ int main(int argc, char** argv) {
     if (const char* x = std::getenv("LAB_DRIFTSTEP")) o.refine_drift_step = std::atof(x);
     if (const char* x = std::getenv("LAB_EXTRAFACTOR")) o.refine_extra_rounds_factor = std::atof(x);
     if (const char* x = std::getenv("LAB_CONVERGEDSTEP")) o.refine_converged_step = std::atof(x);
+    if (std::getenv("LAB_NOROUTE")) o.smooth_surfaces_by_smoothing = false;
     Positions out;
     DenoiseReport r;
     if (!feature_preserving_denoise(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); return 1; }
@@ -921,6 +1018,7 @@ int main(int argc, char** argv) {
     std::snprintf(name, sizeof name, "denoise (u%d s%d sig %.3f r%d p%d fl%.4f sc%.2f)", int(r.untangled), int(r.smoothed_instead),
                   r.sigma_used, r.refine_rounds, r.refine_normal_passes, double(r.flipped_faces) / f.rows(), r.refine_scaled);
     show(name, out);
+    std::printf("  crease contrast %.2f\n", r.crease_contrast);
     std::printf("  steps");
     for (double st : r.refine_steps) std::printf(" %.3f", st);
     std::printf("\n");
