@@ -191,10 +191,9 @@ bool apply(FilterRun& run) {
     if (!report.refine_steps.empty()) {
       QStringList moves;
       for (double m : report.refine_steps) moves << QString::number(m, 'f', 3);
-      const bool cut = report.refine_rounds < int(report.refine_steps.size()) + 1;
       run.log(QString("  rounds: %1 set by the noise; moves of rounds 2 on (noise sigmas): %2%3")
                   .arg(report.refine_rounds_asked).arg(moves.join(", "))
-                  .arg(!cut ? QString()
+                  .arg(!report.refine_round_undone ? QString()
                        : report.refine_rounds < report.refine_rounds_asked
                            ? QString("; the last drifted (above %1) and was undone").arg(o.refine_drift_step)
                            : QString("; the last did not converge (above %1) and was undone").arg(o.refine_converged_step)));

@@ -266,7 +266,8 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
       if (round > 0 && rounds_by_noise && sigma * edge > 0) {
         const double moved = std::sqrt((next - result).rowwise().squaredNorm().mean()) / (sigma * edge);
         report.refine_steps.push_back(moved);
-        if (moved > (round < asked ? options.refine_drift_step : options.refine_converged_step)) break;
+        report.refine_round_undone = moved > (round < asked ? options.refine_drift_step : options.refine_converged_step);
+        if (report.refine_round_undone) break;
       }
       result.swap(next);
       ++report.refine_rounds;

@@ -108,7 +108,8 @@ struct DenoiseReport {
   int refine_rounds_asked = 0;   // given, or set by the noise
   int refine_rounds = 0;         // done
   std::vector<double> refine_steps;  // with rounds set by the noise: the move of each round after the
-                                     // first (RMS, in sigma * mean edge), the last one undone if it ended them
+                                     // first (RMS, in sigma * mean edge)
+  bool refine_round_undone = false;  // the last of refine_steps was undone and ended the rounds
   int refine_normal_passes = 0;  // per round, as used
   double refine_scaled = 1;      // < 1: the refinement's move was scaled down to the noise's RMS
   bool features_detected = false;  // report.type and feature_lines hold the input's features

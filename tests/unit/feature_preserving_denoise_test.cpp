@@ -145,6 +145,7 @@ TEST(FeaturePreservingDenoise, RefinementStopsAtARoundThatDrifts) {
   ASSERT_GE(report.refine_rounds_asked, 2);
   EXPECT_LT(report.refine_rounds, report.refine_rounds_asked);
   ASSERT_EQ(report.refine_steps.size(), static_cast<size_t>(report.refine_rounds));
+  EXPECT_TRUE(report.refine_round_undone);
   EXPECT_GT(report.refine_steps.back(), kRoundDriftStep);
   DenoiseOptions as_is;
   as_is.refine_rounds = report.refine_rounds_asked;
