@@ -313,6 +313,43 @@ void hold(Positions& out, const Positions& input, double radius) {
   }
 }
 
+
+// Each interior edge's hinge residual: the far vertex of one face over the plane of the other,
+// divided by its noise's standard deviation in units of the per-vertex normal noise (first
+// order: sqrt(1 + the squared barycentrics of its projection)).
+std::vector<double> hinge_residuals(const Positions& p, const Faces& f, double max_spread = 1e300) {
+  std::map<std::pair<int, int>, std::vector<int>> owners;
+  for (Eigen::Index i = 0; i < f.rows(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      int a = f(i, k), b = f(i, (k + 1) % 3);
+      owners[{std::min(a, b), std::max(a, b)}].push_back(int(i));
+    }
+  std::vector<double> out;
+  for (const auto& [e, fs] : owners) {
+    if (fs.size() != 2) continue;
+    auto other = [&](int face) {
+      for (int k = 0; k < 3; ++k)
+        if (f(face, k) != e.first && f(face, k) != e.second) return f(face, k);
+      return -1;
+    };
+    const int c = other(fs[0]), d = other(fs[1]);
+    if (c < 0 || d < 0) continue;
+    const Eigen::Vector3d A = p.row(e.first), B = p.row(e.second), C = p.row(c), D = p.row(d);
+    Eigen::Vector3d nrm = (B - A).cross(C - A);
+    const double area2 = nrm.norm();
+    if (!(area2 > 0)) continue;
+    nrm /= area2;
+    const double height = nrm.dot(D - A);
+    const Eigen::Vector3d q = D - height * nrm;
+    const double beta = (q - A).cross(C - A).dot(nrm) / area2;   // weight of B
+    const double gamma = (B - A).cross(q - A).dot(nrm) / area2;  // weight of C
+    const double alpha = 1 - beta - gamma;
+    const double spread = std::sqrt(1 + alpha * alpha + beta * beta + gamma * gamma);
+    if (spread <= max_spread) out.push_back(height / spread);
+  }
+  return out;
+}
+
 int main(int argc, char** argv) {
   std::setvbuf(stdout, nullptr, _IOLBF, 0);
   if (argc < 3) return 1;
@@ -819,6 +856,29 @@ int main(int argc, char** argv) {
     std::printf("\n");
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "E") {  // noise estimate: the IMF's MAD against low quantiles of the hinge residuals
+    std::string err;
+    HamiltonianCycle cycle;
+    hamiltonian_cycle(f, n, CycleOptions{}, cycle, err);
+    for (int which = 0; which < 2; ++which) {
+      const Positions& p = which == 0 ? clean : noisy;
+      NoiseEstimate ne;
+      estimate_noise(p, f, cycle, EmdOptions{}, ne, err);
+      std::vector<double> r = hinge_residuals(p, f);
+      for (double& x : r) x = std::abs(x) / h;
+      std::sort(r.begin(), r.end());
+      auto quant = [&](double q) { return r.empty() ? 0.0 : r[size_t(q * (r.size() - 1))]; };
+      std::vector<double> g = hinge_residuals(p, f, std::atof(std::getenv("LAB_SPREAD") ? std::getenv("LAB_SPREAD") : "3"));
+      for (double& x : g) x = std::abs(x) / h;
+      std::sort(g.begin(), g.end());
+      const double gq10 = g.empty() ? 0.0 : g[size_t(0.1 * (g.size() - 1))] / 0.12566;
+      std::printf("  %s: imf %.4f | hinge q0.10 %.4f q0.25 %.4f q0.50 %.4f | tiny(<1e-4) %.2f | good q0.10 %.4f share %.2f\n", which == 0 ? "clean" : "noisy",
+                  ne.relative(), quant(0.10) / 0.12566, quant(0.25) / 0.31864, quant(0.5) / 0.67449,
+                  double(std::lower_bound(r.begin(), r.end(), 1e-4) - r.begin()) / std::max<size_t>(1, r.size()), gq10,
+                  double(g.size()) / std::max<size_t>(1, r.size()));
+    }
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "F") {  // the noise estimate's floor: one-ring heights with the curvature's share taken out
     std::string err;
     HamiltonianCycle cycle;
@@ -1011,6 +1071,13 @@ int main(int argc, char** argv) {
     if (const char* x = std::getenv("LAB_EXTRAFACTOR")) o.refine_extra_rounds_factor = std::atof(x);
     if (const char* x = std::getenv("LAB_CONVERGEDSTEP")) o.refine_converged_step = std::atof(x);
     if (std::getenv("LAB_NOROUTE")) o.smooth_surfaces_by_smoothing = false;
+    if (std::getenv("LAB_NOCAP")) {  // the finest IMF's estimate without the flat hinges' cap
+      HamiltonianCycle cycle;
+      hamiltonian_cycle(f, n, CycleOptions{}, cycle, err);
+      NoiseEstimate ne;
+      estimate_noise(noisy, f, cycle, EmdOptions{}, ne, err);
+      o.noise = ne.imf_sigma / ne.mean_edge;
+    }
     Positions out;
     DenoiseReport r;
     if (!feature_preserving_denoise(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); return 1; }

@@ -18,8 +18,9 @@ void declare(const MeshDocument&, RichParameterList& p) {
                        "(0.1 to 10)."));
   p.addParam(RichFloat("noisePercent", 0.0f, "Noise level (% of mean edge, 0 = estimate)",
                        "Standard deviation of the noise per coordinate in percent of the mean edge length. 0 "
-                       "estimates it from the finest IMF of the one-ring height signal along a Hamiltonian cycle; "
-                       "give a value only when you know it (0 to 1000)."));
+                       "estimates it from the finest IMF of the one-ring height signal along a Hamiltonian cycle, "
+                       "capped by the exactly flat hinges of CAD meshes (a clean CAD export reads as noise-free and "
+                       "is left as it is); give a value only when you know it, or to smooth such a mesh (0 to 1000)."));
   declare_cycle_and_emd_parameters(p);
 }
 
@@ -49,8 +50,9 @@ bool apply(FilterRun& run) {
   if (options.noise > 0)
     run.log(QString("Adaptive smooth: noise given, sigma %1% of the mean edge length %2").arg(100 * options.noise).arg(edge));
   else
-    run.log(QString("Adaptive smooth: estimated noise sigma %1% of the mean edge length %2 (finest IMF, %3 samples)")
-                .arg(100 * report.sigma_used, 0, 'f', 1).arg(edge).arg(report.noise.samples));
+    run.log(QString("Adaptive smooth: noise sigma %1% of the mean edge length %2 (%3; %4 IMF samples)%5")
+                .arg(100 * report.sigma_used, 0, 'f', 1).arg(edge).arg(noise_estimate_text(report.noise)).arg(report.noise.samples)
+                .arg(report.sigma_used < 0.005 ? "; give the noise level to smooth it anyway" : ""));
   if (report.selection_vertices > 0)
     run.log(QString("  cut-off by cross-validation on %1 vertices (%2 conjugate gradient iterations): %3")
                 .arg(report.selection_vertices).arg(report.selection_iterations)
@@ -78,7 +80,7 @@ FilterSpec adaptive_smooth_filter() {
           "smooth surface), a stronger one, with tangential slides capped by the noise level. Not the paper's "
           "method (its curvature filter leaves stripes and keeps the noise's tangential part): see docs/quality.md "
           "for why and for how it compares with Taubin, HC Laplacian and TwoStep smoothing. A clean mesh is smoothed "
-          "lightly; the connectivity is never changed.",
+          "lightly, a clean CAD mesh with exactly flat parts not at all; the connectivity is never changed.",
           MeshLabFilter::Smoothing,
           MeshLabFilter::SINGLE_MESH,
           MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL,

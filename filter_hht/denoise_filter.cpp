@@ -25,8 +25,9 @@ void declare(const MeshDocument&, RichParameterList& p) {
   const hht::DenoiseOptions d;
   p.addParam(RichFloat("noisePercent", float(100 * d.noise), "Noise level (% of mean edge, 0 = estimate)",
                        "Standard deviation of the noise in percent of the mean edge length (0 to 1000). 0 estimates "
-                       "it from the finest IMF of the one-ring height signal along a Hamiltonian cycle; it sets the "
-                       "number of refinement rounds and the untangling smoothing."));
+                       "it from the finest IMF of the one-ring height signal along a Hamiltonian cycle, capped by the "
+                       "exactly flat hinges of CAD meshes (a clean CAD export reads as noise-free and is left as it "
+                       "is); it sets the number of refinement rounds and the untangling smoothing."));
   p.addParam(RichBool("untangle", d.untangle, "Untangle folded triangles first",
                       "Noise with a tangential part (a scanner's) folds small triangles over, which no normal filter "
                       "repairs. When more than 0.75% of the faces point away from those of the noise-adaptive "
@@ -165,7 +166,7 @@ bool apply(FilterRun& run) {
   const double edge = hht::mean_edge_length(positions, faces);
   run.log(QString("Feature-preserving denoise: noise sigma %1% of the mean edge length %2 (%3)")
               .arg(100 * report.sigma_used, 0, 'f', 1).arg(edge)
-              .arg(o.noise > 0 ? "given" : "estimated from the finest IMF"));
+              .arg(o.noise > 0 ? QString("given") : noise_estimate_text(report.noise)));
   if (o.untangle)
     run.log(QString("  untangling: %1 faces flipped against the noise-adaptive smoothing; %2")
                 .arg(report.flipped_faces)
@@ -210,7 +211,8 @@ bool apply(FilterRun& run) {
 FilterSpec denoise_filter() {
   return {"HHT: Feature-Preserving Denoise",
           "Denoises the mesh while keeping its sharp edges and corners. The noise level is estimated from the finest "
-          "IMF of the one-ring height signal along a Hamiltonian cycle; a mesh whose triangles the noise folded over "
+          "IMF of the one-ring height signal along a Hamiltonian cycle, capped by the exactly flat hinges of CAD "
+          "meshes (a clean one is left as it is); a mesh whose triangles the noise folded over "
           "is first untangled by the noise-adaptive smoothing; then face normals are cleaned by guided normal "
           "filtering (which keeps creases) and the vertices fitted to them, in as many rounds as the noise calls "
           "for. Optionally the paper's divide-and-conquer HHT (sec. 4.3: feature lines as their own 1D signals, the "

@@ -69,6 +69,15 @@ QString stage_times_line(const std::vector<hht::StageTime>& stages) {
   return line + QString(" total %1").arg(total, 0, 'f', 3);
 }
 
+QString noise_estimate_text(const hht::NoiseEstimate& e) {
+  if (!e.capped()) return "estimated from the finest IMF";
+  return QString("estimated: the finest IMF read %1%, capped at %2 x the flat hinges' %3%: exactly flat parts, "
+                 "so the IMF read the triangulation, not noise%4")
+      .arg(100 * e.imf_sigma / e.mean_edge, 0, 'f', 1).arg(hht::kFlatHingeBound)
+      .arg(100 * e.hinge_sigma / e.mean_edge, 0, 'f', 2)
+      .arg(e.relative() < 0.005 ? "; the mesh reads as noise-free and is left nearly as it was" : "");
+}
+
 QStringList imf_summary_lines(const std::vector<hht::ImfSummary>& imfs) {
   QStringList lines;
   for (size_t k = 0; k < imfs.size(); ++k)

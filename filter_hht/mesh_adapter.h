@@ -4,6 +4,7 @@
 
 #include "cycle/cycle_decomposition.h"
 #include "mesh/mesh_arrays.h"
+#include "signal/noise_estimate.h"
 #include "util/stage_clock.h"
 
 #include "meshlab_api.h"
@@ -46,6 +47,10 @@ bool show_as_quality(MeshModel& model, const Eigen::VectorXd& values, double per
 
 // "  times (s): cycle 0.012, emd 0.003, ..., total 0.085"
 QString stage_times_line(const std::vector<hht::StageTime>& stages);
+
+// How the noise level was read: "estimated from the finest IMF" or, when the flat hinges capped
+// it, both readings and what the cap means.
+QString noise_estimate_text(const hht::NoiseEstimate& estimate);
 
 // One line per IMF: "    IMF k: s sifts, frequency f, energy e%".
 QStringList imf_summary_lines(const std::vector<hht::ImfSummary>& imfs);

@@ -2,6 +2,7 @@
 
 #include "cycle/cycle_signal.h"
 #include "evaluation/gaussian_noise.h"
+#include "mesh/hinge_heights.h"
 #include "mesh/mesh_checks.h"
 #include "mesh/vertex_adjacency.h"
 #include "util/parallel_for.h"
@@ -19,6 +20,16 @@ double median(std::vector<double> v) {
   auto mid = v.begin() + v.size() / 2;
   std::nth_element(v.begin(), mid, v.end());
   return *mid;
+}
+
+// x with P(|N(0, 1)| <= x) = q, by bisection on erf (0.1257 for q = 0.1).
+double folded_normal_quantile(double q) {
+  double low = 0, high = 10;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (low + high);
+    (std::erf(mid / std::sqrt(2.0)) < q ? low : high) = mid;
+  }
+  return 0.5 * (low + high);
 }
 
 }  // namespace
@@ -69,7 +80,15 @@ bool estimate_noise(const Positions& positions, const Faces& faces, const Hamilt
   const double centre = median(finest);
   for (double& x : finest) x = std::abs(x - centre);
   const double spread = median(finest) / 0.6745;
-  out.sigma = spread / std::sqrt(1.0 + inverse_valence / interior) / kImf1Share;
+  out.imf_sigma = out.sigma = spread / std::sqrt(1.0 + inverse_valence / interior) / kImf1Share;
+
+  std::vector<double> hinges = hinge_heights(positions, faces);
+  if (static_cast<int>(hinges.size()) < kMinHinges) return true;
+  for (double& x : hinges) x = std::abs(x);
+  const auto at = hinges.begin() + static_cast<std::ptrdiff_t>(kHingeQuantile * static_cast<double>(hinges.size() - 1));
+  std::nth_element(hinges.begin(), at, hinges.end());
+  out.hinge_sigma = *at / folded_normal_quantile(kHingeQuantile);
+  out.sigma = std::min(out.imf_sigma, kFlatHingeBound * out.hinge_sigma);
   return true;
 }
 
