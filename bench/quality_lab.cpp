@@ -19,6 +19,7 @@
 #include "reconstruction/normal_vertex_update.h"
 #include "reconstruction/flip_guard.h"
 #include "mesh/sharp_features.h"
+#include "mesh/crease_contrast.h"
 
 #include <Eigen/SparseCholesky>
 
@@ -348,6 +349,39 @@ std::vector<double> hinge_residuals(const Positions& p, const Faces& f, double m
     if (spread <= max_spread) out.push_back(height / spread);
   }
   return out;
+}
+
+// The mean face-normal tilt that normal noise of `sigma` (length unit) gives each face: the
+// gradient of the linear interpolant of the vertices' offsets, g ~ N(0, sigma^2 sum grad phi_i
+// grad phi_i^T), angle atan|g|, its mean by 8 x 8 Gauss-Hermite nodes.
+double predicted_noise_angle_degrees(const Positions& p, const Faces& f, double sigma) {
+  static const double x[8] = {-2.930637420257244, -1.981656756695843, -1.157193712446780, -0.381186990207322,
+                              0.381186990207322, 1.157193712446780, 1.981656756695843, 2.930637420257244};
+  static const double w[8] = {0.000199604072211, 0.017077983007413, 0.207802325814892, 0.661147012558241,
+                              0.661147012558241, 0.207802325814892, 0.017077983007413, 0.000199604072211};
+  double total = 0;
+  int counted = 0;
+  for (Eigen::Index t = 0; t < f.rows(); ++t) {
+    const Eigen::Vector3d a = p.row(f(t, 0)), b = p.row(f(t, 1)), c = p.row(f(t, 2));
+    const Eigen::Vector3d n = (b - a).cross(c - a);
+    const double area2 = n.norm();
+    if (!(area2 > 0)) continue;
+    const Eigen::Vector3d nn = n / area2;
+    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+    const Eigen::Vector3d e[3] = {c - b, a - c, b - a};
+    for (int i = 0; i < 3; ++i) {
+      const Eigen::Vector3d g = nn.cross(e[i]) / area2;  // grad phi_i, |.| = 1 / height_i
+      cov += g * g.transpose();
+    }
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov * sigma * sigma);
+    const double l1 = std::sqrt(std::max(0.0, es.eigenvalues()[2])), l2 = std::sqrt(std::max(0.0, es.eigenvalues()[1]));
+    double mean = 0;
+    for (int i = 0; i < 8; ++i)
+      for (int j = 0; j < 8; ++j) mean += w[i] * w[j] * std::atan(std::hypot(std::sqrt(2.0) * x[i] * l1, std::sqrt(2.0) * x[j] * l2));
+    total += mean / M_PI;
+    ++counted;
+  }
+  return counted ? total / counted * 180 / M_PI : 0;
 }
 
 int main(int argc, char** argv) {
@@ -856,6 +890,34 @@ int main(int argc, char** argv) {
     std::printf("\n");
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "G") {  // guard: the denoiser's normal change against the noise's predicted tilt
+    std::string err;
+    DenoiseOptions o;
+    Positions out;
+    DenoiseReport r;
+    if (!feature_preserving_denoise(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); return 1; }
+    const double edge = mean_edge_length(noisy, f);
+    const double pred_est = predicted_noise_angle_degrees(noisy, f, r.sigma_used * edge);
+    const double pred_true = predicted_noise_angle_degrees(clean, f, level * h);
+    const double change = mean_face_normal_error_degrees(out, noisy, f);
+    std::printf("  sigma %.3f (s%d)  predicted tilt: from estimate %.2f, true %.2f | noisy E_a %.2f | change %.2f  ratio %.2f\n", r.sigma_used,
+                int(r.smoothed_instead), pred_est, pred_true, mean_face_normal_error_degrees(noisy, clean, f), change, change / std::max(1e-9, pred_est));
+    show("denoise", out);
+    for (double kappa : {1.0, 1.25, 1.5, 2.0}) {
+      double lo = 0, hi = 1;
+      if (change <= kappa * pred_est) { lo = 1; } else {
+        for (int it = 0; it < 30; ++it) {
+          const double mid = 0.5 * (lo + hi);
+          const Positions b = noisy + mid * (out - noisy);
+          (mean_face_normal_error_degrees(b, noisy, f) <= kappa * pred_est ? lo : hi) = mid;
+        }
+      }
+      char name[64];
+      std::snprintf(name, sizeof name, "guard k%.2f t%.2f", kappa, lo);
+      show(name, Positions(noisy + lo * (out - noisy)));
+    }
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "E") {  // noise estimate: the IMF's MAD against low quantiles of the hinge residuals
     std::string err;
     HamiltonianCycle cycle;
@@ -1085,7 +1147,7 @@ int main(int argc, char** argv) {
     std::snprintf(name, sizeof name, "denoise (u%d s%d sig %.3f r%d p%d fl%.4f sc%.2f)", int(r.untangled), int(r.smoothed_instead),
                   r.sigma_used, r.refine_rounds, r.refine_normal_passes, double(r.flipped_faces) / f.rows(), r.refine_scaled);
     show(name, out);
-    std::printf("  crease contrast %.2f\n", r.crease_contrast);
+    std::printf("  crease contrast %.2f (input %.2f)\n", r.crease_contrast, crease_contrast(noisy, f));
     std::printf("  steps");
     for (double st : r.refine_steps) std::printf(" %.3f", st);
     std::printf("\n");
