@@ -1133,6 +1133,7 @@ int main(int argc, char** argv) {
     if (const char* x = std::getenv("LAB_EXTRAFACTOR")) o.refine_extra_rounds_factor = std::atof(x);
     if (const char* x = std::getenv("LAB_CONVERGEDSTEP")) o.refine_converged_step = std::atof(x);
     if (std::getenv("LAB_NOROUTE")) o.smooth_surfaces_by_smoothing = false;
+    if (std::getenv("LAB_NOFLAT")) o.refine_flat_parts = false;
     if (std::getenv("LAB_NOCAP")) {  // the finest IMF's estimate without the flat hinges' cap
       HamiltonianCycle cycle;
       hamiltonian_cycle(f, n, CycleOptions{}, cycle, err);
@@ -1144,7 +1145,7 @@ int main(int argc, char** argv) {
     DenoiseReport r;
     if (!feature_preserving_denoise(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); return 1; }
     char name[80];
-    std::snprintf(name, sizeof name, "denoise (u%d s%d sig %.3f r%d p%d fl%.4f sc%.2f)", int(r.untangled), int(r.smoothed_instead),
+    std::snprintf(name, sizeof name, "denoise (u%d s%d f%d sig %.3f r%d p%d fl%.4f sc%.2f)", int(r.untangled), int(r.smoothed_instead), int(r.flat_parts_refined),
                   r.sigma_used, r.refine_rounds, r.refine_normal_passes, double(r.flipped_faces) / f.rows(), r.refine_scaled);
     show(name, out);
     std::printf("  crease contrast %.2f (input %.2f)\n", r.crease_contrast, crease_contrast(noisy, f));

@@ -35,7 +35,8 @@ void declare(const MeshDocument&, RichParameterList& p) {
   p.addParam(RichBool("smoothCreaseless", d.smooth_surfaces_by_smoothing, "Smooth surfaces without sharp creases",
                       "When the smoothed mesh shows no sharp creases (the 98th percentile of its dihedral angles under "
                       "9 times their median: organic models), the result is HHT: Adaptive Smooth's instead of the "
-                      "refinement, which would facet it. Turn off to force the refinement, e.g. on a CAD part with "
+                      "refinement, which would facet it; not on a mesh whose exactly flat parts capped the noise "
+                      "estimate and that needed no untangling (a lightly noisy CAD part). Turn off to force the refinement, e.g. on a CAD part with "
                       "rounded edges. Ignored with the paper's stage on."));
   p.addParam(RichInt("refineRounds", d.refine_rounds, "Refinement rounds (0 = by the noise)",
                      "Rounds of guided normal filtering and vertex update (0 to 100); 0 takes one per 10% of noise "
@@ -184,6 +185,9 @@ bool apply(FilterRun& run) {
     run.log(QString("  crease contrast of the smoothed mesh %1 (below %2: no sharp creases)%3")
                 .arg(report.crease_contrast, 0, 'f', 1).arg(hht::kCreaseContrast)
                 .arg(report.smoothed_instead ? "; the result is the adaptive smoothing (cross-validated cut-off)" : ""));
+  if (report.flat_parts_refined)
+    run.log("  no sharp creases read, but the mesh has exactly flat parts (its noise estimate was capped by them): "
+            "a CAD part, refined all the same");
   if (report.smoothed_instead) {
     run.log("  no refinement (the surface has no sharp creases)");
   } else if (report.refine_normal_passes > 0 && o.refine_vertex_iterations > 0) {

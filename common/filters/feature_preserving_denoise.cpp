@@ -211,7 +211,9 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     // A surface without sharp creases (organic): the guided refinement, made for creases, would
     // facet it; the adaptive smoothing with its cross-validated cut-off is the better result.
     report.crease_contrast = crease_contrast(smoothed, faces);
-    if (route && report.crease_contrast < kCreaseContrast) {
+    const bool no_creases = report.crease_contrast < kCreaseContrast;
+    report.flat_parts_refined = no_creases && options.refine_flat_parts && report.noise.capped() && !report.untangled;
+    if (route && no_creases && !report.flat_parts_refined) {
       step(40, "No sharp creases: adaptive smoothing");
       smoothing = NoiseAdaptiveSmoothingOptions{};  // the adaptive smoothing's own filter
       smoothing.noise = sigma;

@@ -21,7 +21,9 @@
 //    (guided_normal_denoise.h);
 //  - surfaces without sharp creases (crease_contrast.h of the smoothed mesh below kCreaseContrast)
 //    get the adaptive smoothing, cross-validated cut-off, as the result instead: the refinement
-//    facets them;
+//    facets them; not a mesh with exactly flat parts (its noise estimate capped by the flat
+//    hinges) that needed no untangling: a lightly noisy coarse CAD part, whose few-vertex creases
+//    the smoothing of the crease contrast flattens;
 //  - the paper's HHT stage above is off by default (paper_stage): measured, it makes the result
 //    worse than the refinement alone on most cases (docs/quality.md).
 #pragma once
@@ -75,6 +77,8 @@ struct DenoiseOptions {
   double untangle_mu_scale = kUntangleMuScale;
   bool smooth_surfaces_by_smoothing = true;  // no sharp creases (kCreaseContrast): the adaptive smoothing
                                              // (not with the paper's stage: that asks for the paper's method)
+  bool refine_flat_parts = true;  // a mesh with exactly flat parts (its noise estimate capped by the
+                                  // flat hinges: a CAD part) keeps the refinement unless untangled
   bool detect_features = true;  // false: the torus-like case, no feature separation (Fig. 8)
   bool show_features = false;   // detect them for the caller (report.type, feature_lines) even where
                                 // no stage uses them; otherwise only the paper's stage asks for them
@@ -105,6 +109,7 @@ struct DenoiseReport {
   int flipped_faces = 0;       // input faces flipped against that smoothing
   double crease_contrast = 0;  // of that smoothing (0: not measured)
   bool smoothed_instead = false;  // no sharp creases: the result is the adaptive smoothing
+  bool flat_parts_refined = false;  // no sharp creases read, but flat parts: refined all the same
   int refine_rounds_asked = 0;   // given, or set by the noise
   int refine_rounds = 0;         // done
   std::vector<double> refine_steps;  // with rounds set by the noise: the move of each round after the
