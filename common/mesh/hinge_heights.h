@@ -12,13 +12,15 @@
 #pragma once
 
 #include "mesh/mesh_arrays.h"
+#include "mesh/vertex_adjacency.h"
 
 #include <vector>
 
 namespace hht {
 
 // One value per interior edge of two faces (boundary and non-manifold edges, and edges of
-// zero-area faces, are left out), in the length unit of `positions`, signed.
-std::vector<double> hinge_heights(const Positions& positions, const Faces& faces);
+// zero-area faces, are left out), in the length unit of `positions`, signed. `adjacency` is
+// vertex_adjacency() of the same faces.
+std::vector<double> hinge_heights(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency);
 
 }  // namespace hht

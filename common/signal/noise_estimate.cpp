@@ -82,7 +82,7 @@ bool estimate_noise(const Positions& positions, const Faces& faces, const Hamilt
   const double spread = median(finest) / 0.6745;
   out.imf_sigma = out.sigma = spread / std::sqrt(1.0 + inverse_valence / interior) / kImf1Share;
 
-  std::vector<double> hinges = hinge_heights(positions, faces);
+  std::vector<double> hinges = hinge_heights(positions, faces, adjacency);
   if (static_cast<int>(hinges.size()) < kMinHinges) return true;
   for (double& x : hinges) x = std::abs(x);
   const auto at = hinges.begin() + static_cast<std::ptrdiff_t>(kHingeQuantile * static_cast<double>(hinges.size() - 1));
