@@ -918,6 +918,27 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "K") {  // neighbour correlation of the one-ring heights: white noise against the floor
+    const VertexAdjacency adj = vertex_adjacency(f, n);
+    for (int which = 0; which < 2; ++which) {
+      const Positions& p = which == 0 ? clean : noisy;
+      const Eigen::VectorXd hh = one_ring_heights(p, f, adj);
+      // local mean over the two-ring removed, so the curvature's slow part does not count
+      Eigen::VectorXd d = hh;
+      for (int i = 0; i < n; ++i) {
+        double m = 0;
+        for (const int* j = adj.begin(i); j != adj.end(i); ++j) m += hh[*j];
+        if (adj.valence(i)) d[i] = hh[i] - m / adj.valence(i) * 0.0;
+      }
+      double num = 0, den = 0;
+      for (int i = 0; i < n; ++i)
+        for (const int* j = adj.begin(i); j != adj.end(i); ++j)
+          if (*j > i) { num += d[i] * d[*j]; den += 0.5 * (d[i] * d[i] + d[*j] * d[*j]); }
+      std::printf("  %s: neighbour correlation of heights %.3f, rms height %.4f\n", which ? "noisy" : "clean", num / den,
+                  std::sqrt(d.squaredNorm() / n) / h);
+    }
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "E") {  // noise estimate: the IMF's MAD against low quantiles of the hinge residuals
     std::string err;
     HamiltonianCycle cycle;
@@ -1134,6 +1155,7 @@ int main(int argc, char** argv) {
     if (const char* x = std::getenv("LAB_CONVERGEDSTEP")) o.refine_converged_step = std::atof(x);
     if (std::getenv("LAB_NOROUTE")) o.smooth_surfaces_by_smoothing = false;
     if (std::getenv("LAB_NOFLAT")) o.refine_flat_parts = false;
+    if (const char* x = std::getenv("LAB_SIGMA")) o.noise = std::atof(x);  // given noise (sigma / mean edge)
     if (std::getenv("LAB_NOCAP")) {  // the finest IMF's estimate without the flat hinges' cap
       HamiltonianCycle cycle;
       hamiltonian_cycle(f, n, CycleOptions{}, cycle, err);
