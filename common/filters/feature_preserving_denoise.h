@@ -78,7 +78,8 @@ struct DenoiseOptions {
   bool smooth_surfaces_by_smoothing = true;  // no sharp creases (kCreaseContrast): the adaptive smoothing
                                              // (not with the paper's stage: that asks for the paper's method)
   bool refine_flat_parts = true;  // a mesh with exactly flat parts (its noise estimate capped by the
-                                  // flat hinges: a CAD part) keeps the refinement unless untangled
+                                  // flat hinges: a CAD part) keeps the refinement unless untangled;
+                                  // with the noise given (no estimate) the rule cannot apply
   bool detect_features = true;  // false: the torus-like case, no feature separation (Fig. 8)
   bool show_features = false;   // detect them for the caller (report.type, feature_lines) even where
                                 // no stage uses them; otherwise only the paper's stage asks for them
