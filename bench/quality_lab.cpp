@@ -1170,7 +1170,7 @@ int main(int argc, char** argv) {
     std::snprintf(name, sizeof name, "denoise (u%d s%d f%d sig %.3f r%d p%d fl%.4f sc%.2f)", int(r.untangled), int(r.smoothed_instead), int(r.flat_parts_refined),
                   r.sigma_used, r.refine_rounds, r.refine_normal_passes, double(r.flipped_faces) / f.rows(), r.refine_scaled);
     show(name, out);
-    std::printf("  crease contrast %.2f (input %.2f)\n", r.crease_contrast, crease_contrast(noisy, f));
+    std::printf("  crease contrast %.2f (input %.2f); estimate imf %.4f hinge %.4f capped %d\n", r.crease_contrast, crease_contrast(noisy, f), r.noise.imf_sigma / std::max(1e-300, r.noise.mean_edge), r.noise.hinge_sigma / std::max(1e-300, r.noise.mean_edge), int(r.noise.capped()));
     std::printf("  steps");
     for (double st : r.refine_steps) std::printf(" %.3f", st);
     std::printf("\n");
