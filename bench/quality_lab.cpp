@@ -939,6 +939,32 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "U") {  // tangles: faces turned by the untangling's smoothing, and by a second one
+    std::string err;
+    HamiltonianCycle cycle;
+    hamiltonian_cycle(f, n, CycleOptions{}, cycle, err);
+    NoiseEstimate ne;
+    estimate_noise(noisy, f, cycle, EmdOptions{}, ne, err);
+    NoiseAdaptiveSmoothingOptions so;
+    so.noise = std::max(ne.relative(), 1e-6);
+    so.select_cutoff = false;
+    so.first_order = kUntangleFirstOrder;
+    so.mu_scale = kUntangleMuScale;
+    NoiseAdaptiveSmoothingReport sr;
+    Positions s1, s2;
+    noise_adaptive_smooth(noisy, f, so, s1, sr, err);
+    noise_adaptive_smooth(s1, f, so, s2, sr, err);
+    auto turned = [&](const Positions& a, const Positions& b) {
+      const Positions na = face_normals(a, f), nb = face_normals(b, f);
+      int c = 0;
+      for (Eigen::Index i = 0; i < f.rows(); ++i) c += na.row(i).dot(nb.row(i)) < 0;
+      return 100.0 * c / f.rows();
+    };
+    const double t1 = turned(noisy, s1), t2 = turned(s1, s2);
+    std::printf("  sigma %.3f capped %d | turned by the smoothing %.2f%%, by a second %.2f%%, ratio %.1f\n", ne.relative(), int(ne.capped()), t1, t2,
+                t1 / std::max(t2, 1e-9));
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "E") {  // noise estimate: the IMF's MAD against low quantiles of the hinge residuals
     std::string err;
     HamiltonianCycle cycle;

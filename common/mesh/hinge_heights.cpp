@@ -29,6 +29,7 @@ std::vector<double> hinge_heights(const Positions& positions, const Faces& faces
       if (*at < a || second[slot] < 0) continue;  // each edge once; boundary or non-manifold
       const Eigen::Vector3d A = positions.row(a), B = positions.row(*at);
       const Eigen::Vector3d C = positions.row(first[slot]), D = positions.row(second[slot]);
+      if (C == D) continue;  // a face and its duplicate (or a fold onto itself): no hinge
       Eigen::Vector3d normal = (B - A).cross(C - A);
       const double twice_area = normal.norm();
       const double other_area = (B - A).cross(D - A).norm();

@@ -60,7 +60,7 @@ TEST(HingeHeights, NormalNoiseOfSigmaReadsSigma) {
   EXPECT_NEAR(h[h.size() / 2] / 0.6745, 0.01, 0.0005);
 }
 
-TEST(HingeHeights, SkipsBoundaryNonManifoldAndDegenerateEdges) {
+TEST(HingeHeights, SkipsBoundaryNonManifoldDegenerateAndDuplicateEdges) {
   // three faces on edge 0-1: non-manifold; every other edge is on the boundary
   Positions p(5, 3);
   p << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1;
@@ -75,6 +75,11 @@ TEST(HingeHeights, SkipsBoundaryNonManifoldAndDegenerateEdges) {
     else g << 1, 0, 3, 0, 1, 2;
     EXPECT_TRUE(hinge_heights(p, g, vertex_adjacency(g, static_cast<int>(p.rows()))).empty()) << first;
   }
+  // a face and its duplicate, turned over (a double-sided triangle): no hinge, not a flat one
+  p.row(2) << 0, 1, 0;
+  Faces twice(2, 3);
+  twice << 0, 1, 2, 1, 0, 2;
+  EXPECT_TRUE(hinge_heights(p, twice, vertex_adjacency(twice, static_cast<int>(p.rows()))).empty());
 }
 
 }  // namespace
