@@ -965,6 +965,47 @@ int main(int argc, char** argv) {
                 t1 / std::max(t2, 1e-9));
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "B") {  // blend: the refinement near its creases, the adaptive smoothing elsewhere
+    std::string err;
+    DenoiseOptions o;
+    o.smooth_surfaces_by_smoothing = false;
+    Positions refined;
+    DenoiseReport r;
+    if (!feature_preserving_denoise(noisy, f, o, refined, r, err)) { std::printf("%s\n", err.c_str()); return 1; }
+    NoiseAdaptiveSmoothingOptions so;
+    so.noise = std::max(r.sigma_used, 1e-6);
+    NoiseAdaptiveSmoothingReport sr;
+    Positions smoothed;
+    noise_adaptive_smooth(noisy, f, so, smoothed, sr, err);
+    const double crease = std::atof(std::getenv("LAB_CREASE") ? std::getenv("LAB_CREASE") : "30");
+    const int rings = std::atoi(std::getenv("LAB_RINGS") ? std::getenv("LAB_RINGS") : "2");
+    const Positions fnr = face_normals(refined, f);
+    std::map<std::pair<int, int>, std::vector<int>> owners;
+    for (Eigen::Index i = 0; i < f.rows(); ++i)
+      for (int k = 0; k < 3; ++k) {
+        const int a = f(i, k), b = f(i, (k + 1) % 3);
+        owners[{std::min(a, b), std::max(a, b)}].push_back(int(i));
+      }
+    std::vector<int> ring(n, 1 << 20);
+    for (const auto& [e, fs] : owners)
+      if (fs.size() == 2 && fnr.row(fs[0]).dot(fnr.row(fs[1])) < std::cos(crease * M_PI / 180)) ring[e.first] = ring[e.second] = 0;
+    const VertexAdjacency adj = vertex_adjacency(f, n);
+    for (int step = 0; step < rings + 2; ++step)
+      for (int i = 0; i < n; ++i)
+        for (const int* j = adj.begin(i); j != adj.end(i); ++j) ring[i] = std::min(ring[i], ring[*j] + 1);
+    Positions blend = smoothed;
+    int near = 0;
+    for (int i = 0; i < n; ++i) {
+      const double w = ring[i] <= rings ? 1.0 : ring[i] == rings + 1 ? 0.5 : 0.0;
+      blend.row(i) = w * refined.row(i) + (1 - w) * smoothed.row(i);
+      near += w > 0;
+    }
+    std::printf("  sigma %.3f u%d | %.1f%% of the vertices near creases\n", r.sigma_used, int(r.untangled), 100.0 * near / n);
+    show("refined", refined);
+    show("smoothed", smoothed);
+    show("blend", blend);
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "E") {  // noise estimate: the IMF's MAD against low quantiles of the hinge residuals
     std::string err;
     HamiltonianCycle cycle;
