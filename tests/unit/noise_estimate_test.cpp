@@ -101,6 +101,27 @@ TEST(NoiseEstimate, FlatHingesCapTheFloorOfCleanCadMeshes) {
   }
 }
 
+// A noisy mesh with an exactly flat part (a planar cut, a flattened base) keeps its estimate
+// while that part holds a small share of its hinges; the cap needs a tenth of them flat.
+TEST(NoiseEstimate, ASmallFlatPartDoesNotCapANoisyMesh) {
+  const test::ArrayMesh cow = test::load_data_mesh("cow");
+  const Positions noisy = add_gaussian_noise(cow.positions, cow.faces, 10, NoiseDirection::Isotropic, 9);
+  const NoiseEstimate plain = estimate(noisy, cow.faces);
+  auto flatten_lowest = [&](double share) {  // the lowest vertices put on one plane
+    std::vector<double> z(noisy.rows());
+    for (Eigen::Index i = 0; i < noisy.rows(); ++i) z[i] = noisy(i, 2);
+    std::nth_element(z.begin(), z.begin() + static_cast<long>(share * z.size()), z.end());
+    const double cut = z[static_cast<size_t>(share * z.size())];
+    Positions out = noisy;
+    for (Eigen::Index i = 0; i < out.rows(); ++i) out(i, 2) = std::max(out(i, 2), cut);
+    return out;
+  };
+  const NoiseEstimate cut = estimate(flatten_lowest(0.03), cow.faces);
+  EXPECT_FALSE(cut.capped());
+  EXPECT_NEAR(cut.relative(), plain.relative(), 0.1 * plain.relative());
+  EXPECT_TRUE(estimate(flatten_lowest(0.3), cow.faces).capped());
+}
+
 TEST(NoiseEstimate, IsScaleFree) {
   const test::ArrayMesh s = test::sphere(4);
   const Positions noisy = add_gaussian_noise(s.positions, s.faces, 20, NoiseDirection::Isotropic, 1);
