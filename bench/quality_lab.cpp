@@ -1000,7 +1000,8 @@ int main(int argc, char** argv) {
       blend.row(i) = w * refined.row(i) + (1 - w) * smoothed.row(i);
       near += w > 0;
     }
-    std::printf("  sigma %.3f u%d | %.1f%% of the vertices near creases\n", r.sigma_used, int(r.untangled), 100.0 * near / n);
+    std::printf("  sigma %.3f u%d capped %d sc %.2f contrast %.2f | %.1f%% of the vertices near creases\n", r.sigma_used, int(r.untangled),
+                int(r.noise.capped()), r.refine_scaled, r.crease_contrast, 100.0 * near / n);
     show("refined", refined);
     show("smoothed", smoothed);
     show("blend", blend);
