@@ -52,7 +52,11 @@ bool apply(FilterRun& run) {
   else
     run.log(QString("Adaptive smooth: noise sigma %1% of the mean edge length %2 (%3; %4 IMF samples)%5")
                 .arg(100 * report.sigma_used, 0, 'f', 1).arg(edge).arg(noise_estimate_text(report.noise)).arg(report.noise.samples)
-                .arg(report.sigma_used < 0.005 ? "; give the noise level to smooth it anyway" : ""));
+                .arg(report.noise_free ? "; give the noise level to smooth it anyway" : ""));
+  if (report.noise_free) {
+    run.log(stage_times_line(report.stages));
+    return true;
+  }
   if (report.selection_vertices > 0)
     run.log(QString("  cut-off by cross-validation on %1 vertices (%2 conjugate gradient iterations): %3")
                 .arg(report.selection_vertices).arg(report.selection_iterations)

@@ -168,13 +168,17 @@ bool apply(FilterRun& run) {
   run.log(QString("Feature-preserving denoise: noise sigma %1% of the mean edge length %2 (%3)")
               .arg(100 * report.sigma_used, 0, 'f', 1).arg(edge)
               .arg(o.noise > 0 ? QString("given") : noise_estimate_text(report.noise)));
+  if (report.features_detected)
+    run.log(QString("  features: %1 vertices, %2 feature lines, %3 corners")
+                .arg(report.feature_vertices).arg(report.lines).arg(report.corners));
+  if (report.noise_free) {
+    run.log(stage_times_line(report.stages));
+    return true;
+  }
   if (o.untangle)
     run.log(QString("  untangling: %1 faces flipped against the noise-adaptive smoothing; %2")
                 .arg(report.flipped_faces)
                 .arg(report.untangled ? "started from that smoothing" : "started from the input"));
-  if (report.features_detected)
-    run.log(QString("  features: %1 vertices, %2 feature lines, %3 corners")
-                .arg(report.feature_vertices).arg(report.lines).arg(report.corners));
   if (o.paper_stage) {
     run.log(QString("  paper's stage: %1 lines by EMD, %2 by 1D Laplacian; low-pass at %3 cycles/sample along %4 "
                     "cycle(s), %5 IMFs on the first; reconstruction lambda %6, %7 CG iterations")

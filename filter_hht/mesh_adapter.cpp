@@ -75,7 +75,7 @@ QString noise_estimate_text(const hht::NoiseEstimate& e) {
                  "so the IMF read the triangulation, not noise%4")
       .arg(100 * e.imf_sigma / e.mean_edge, 0, 'f', 1).arg(hht::kFlatHingeBound)
       .arg(100 * e.hinge_sigma / e.mean_edge, 0, 'f', 2)
-      .arg(e.relative() < 0.005 ? "; the mesh reads as noise-free and is left nearly as it was" : "");
+      .arg(e.relative() < hht::kNoiseFree ? "; the mesh reads as noise-free and is left as it is" : "");
 }
 
 QStringList imf_summary_lines(const std::vector<hht::ImfSummary>& imfs) {

@@ -184,6 +184,15 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     return true;
   };
 
+  // No noise to remove: the input as it is (the paper's stage, when asked for, still runs).
+  if (!(options.noise > 0) && sigma < kNoiseFree && !options.paper_stage) {
+    report.noise_free = true;
+    if (options.detect_features && options.show_features && !detect_features(99)) return false;
+    result = positions;
+    step(100, "Done");
+    return true;
+  }
+
   Positions start = positions;
   const bool route = options.smooth_surfaces_by_smoothing && !options.paper_stage;
   if (options.untangle || route) {

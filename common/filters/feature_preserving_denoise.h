@@ -109,6 +109,7 @@ struct DenoiseReport {
   bool untangled = false;      // started from the noise-adaptive smoothing
   int flipped_faces = 0;       // input faces flipped against that smoothing
   double crease_contrast = 0;  // of that smoothing (0: not measured)
+  bool noise_free = false;     // the estimate read less than kNoiseFree: the result is the input
   bool smoothed_instead = false;  // no sharp creases: the result is the adaptive smoothing
   bool flat_parts_refined = false;  // no sharp creases read, but flat parts: refined all the same
   int refine_rounds_asked = 0;   // given, or set by the noise

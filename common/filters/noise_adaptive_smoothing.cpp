@@ -114,6 +114,13 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
     if (!estimate_noise(positions, faces, cycle, options.emd, report.noise, error)) return false;
     clock.done("noise estimate");
     sigma = report.noise.relative();
+    if (sigma < kNoiseFree) {
+      report.noise_free = true;
+      report.sigma_used = sigma;
+      result = positions;
+      step(100, "Done");
+      return true;
+    }
   }
   report.sigma_used = sigma;
   const Eigen::RowVector3d centre = positions.colwise().mean();

@@ -88,6 +88,7 @@ struct NoiseAdaptiveSmoothingOptions {
 struct NoiseAdaptiveSmoothingReport {
   NoiseEstimate noise;         // as estimated (sigma 0 when `noise` was given)
   double sigma_used = 0;       // relative to the mean edge
+  bool noise_free = false;     // the estimate read less than kNoiseFree: the result is the input
   double mu = 0;
   bool cutoff_selected = false;  // mu from cross-validation (stronger than the noise level's)
   int selection_iterations = 0;  // conjugate gradient iterations of the selection's solves

@@ -19,8 +19,8 @@
 namespace hht {
 
 // One value per interior edge of two faces (boundary and non-manifold edges, edges of
-// zero-area faces, and a face against its own duplicate are left out), in the length unit of `positions`, signed. `adjacency` is
-// vertex_adjacency() of the same faces.
+// zero-area faces, and a face against its own duplicate are left out), in the length unit of
+// `positions`, signed. `adjacency` is vertex_adjacency() of the same faces.
 std::vector<double> hinge_heights(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency);
 
 }  // namespace hht

@@ -47,6 +47,12 @@ struct NoiseEstimate {
   bool capped() const { return sigma < imf_sigma; }
 };
 
+// Below this sigma (in mean edges) an estimated noise counts as none: the filters that estimate
+// it leave the mesh exactly as it is, without their solves (clean fandisk and spool read 0: a
+// tenth of their hinges are flat to the last digit; the denoiser's smoothing would otherwise
+// estimate the noise again, since 0 asks it to).
+constexpr double kNoiseFree = 1e-4;
+
 // The cap: sigma <= kFlatHingeBound * hinge_sigma, with hinge_sigma the kHingeQuantile quantile
 // of |hinge height| over that quantile of |N(0, 1)| (0.1257), on meshes of kMinHinges hinges
 // or more.

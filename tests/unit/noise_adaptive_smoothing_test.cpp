@@ -147,6 +147,21 @@ TEST(NoiseAdaptiveSmoothing, CleanSmoothMeshBarelyMoves) {
   EXPECT_EQ(report.unfolded_vertices, 0);
 }
 
+// A clean CAD export reads as noise-free (its flat hinges cap the estimate): the result is the
+// input, and no solve runs; a given noise level smooths it all the same.
+TEST(NoiseAdaptiveSmoothing, CleanCadExportIsLeftAsItIs) {
+  const test::ArrayMesh m = test::load_data_mesh("spool");
+  NoiseAdaptiveSmoothingReport report;
+  EXPECT_EQ(smooth(m.positions, m.faces, {}, &report), m.positions);
+  EXPECT_TRUE(report.noise_free);
+  EXPECT_LT(report.sigma_used, kNoiseFree);
+  EXPECT_EQ(report.iterations, 0);
+  NoiseAdaptiveSmoothingOptions given;
+  given.noise = 0.05;
+  EXPECT_NE(smooth(m.positions, m.faces, given, &report), m.positions);
+  EXPECT_FALSE(report.noise_free);
+}
+
 TEST(NoiseAdaptiveSmoothing, RemovesNoiseOnASphere) {
   const test::ArrayMesh s = test::sphere(5);
   const Positions noisy = add_gaussian_noise(s.positions, s.faces, 20, NoiseDirection::Isotropic, 8);
