@@ -20,6 +20,7 @@
 #include "reconstruction/flip_guard.h"
 #include "mesh/sharp_features.h"
 #include "mesh/crease_contrast.h"
+#include "mesh/hinge_heights.h"
 
 #include <Eigen/SparseCholesky>
 
@@ -315,40 +316,23 @@ void hold(Positions& out, const Positions& input, double radius) {
 }
 
 
-// Each interior edge's hinge residual: the far vertex of one face over the plane of the other,
-// divided by its noise's standard deviation in units of the per-vertex normal noise (first
-// order: sqrt(1 + the squared barycentrics of its projection)).
-std::vector<double> hinge_residuals(const Positions& p, const Faces& f, double max_spread = 1e300) {
-  std::map<std::pair<int, int>, std::vector<int>> owners;
-  for (Eigen::Index i = 0; i < f.rows(); ++i)
-    for (int k = 0; k < 3; ++k) {
-      int a = f(i, k), b = f(i, (k + 1) % 3);
-      owners[{std::min(a, b), std::max(a, b)}].push_back(int(i));
-    }
-  std::vector<double> out;
-  for (const auto& [e, fs] : owners) {
-    if (fs.size() != 2) continue;
-    auto other = [&](int face) {
-      for (int k = 0; k < 3; ++k)
-        if (f(face, k) != e.first && f(face, k) != e.second) return f(face, k);
-      return -1;
-    };
-    const int c = other(fs[0]), d = other(fs[1]);
-    if (c < 0 || d < 0) continue;
-    const Eigen::Vector3d A = p.row(e.first), B = p.row(e.second), C = p.row(c), D = p.row(d);
-    Eigen::Vector3d nrm = (B - A).cross(C - A);
-    const double area2 = nrm.norm();
-    if (!(area2 > 0)) continue;
-    nrm /= area2;
-    const double height = nrm.dot(D - A);
-    const Eigen::Vector3d q = D - height * nrm;
-    const double beta = (q - A).cross(C - A).dot(nrm) / area2;   // weight of B
-    const double gamma = (B - A).cross(q - A).dot(nrm) / area2;  // weight of C
-    const double alpha = 1 - beta - gamma;
-    const double spread = std::sqrt(1 + alpha * alpha + beta * beta + gamma * gamma);
-    if (spread <= max_spread) out.push_back(height / spread);
-  }
-  return out;
+// The denoiser's untangling smoothing at noise `sigma` (mean edges): the second-order filter at
+// the noise law's cut-off, without cross-validation.
+NoiseAdaptiveSmoothingOptions untangling_options(double sigma) {
+  NoiseAdaptiveSmoothingOptions o;
+  o.noise = sigma;
+  o.select_cutoff = false;
+  o.first_order = kUntangleFirstOrder;
+  o.mu_scale = kUntangleMuScale;
+  return o;
+}
+
+// Share of the faces of `a` whose normal points against the same face's in `b`.
+double turned_share(const Positions& a, const Positions& b, const Faces& f) {
+  const Positions na = face_normals(a, f), nb = face_normals(b, f);
+  int c = 0;
+  for (Eigen::Index i = 0; i < f.rows(); ++i) c += na.row(i).dot(nb.row(i)) < 0;
+  return double(c) / f.rows();
 }
 
 // The mean face-normal tilt that normal noise of `sigma` (length unit) gives each face: the
@@ -918,49 +902,18 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
-  if (argc > 3 && std::string(argv[3]) == "K") {  // neighbour correlation of the one-ring heights: white noise against the floor
-    const VertexAdjacency adj = vertex_adjacency(f, n);
-    for (int which = 0; which < 2; ++which) {
-      const Positions& p = which == 0 ? clean : noisy;
-      const Eigen::VectorXd hh = one_ring_heights(p, f, adj);
-      // local mean over the two-ring removed, so the curvature's slow part does not count
-      Eigen::VectorXd d = hh;
-      for (int i = 0; i < n; ++i) {
-        double m = 0;
-        for (const int* j = adj.begin(i); j != adj.end(i); ++j) m += hh[*j];
-        if (adj.valence(i)) d[i] = hh[i] - m / adj.valence(i) * 0.0;
-      }
-      double num = 0, den = 0;
-      for (int i = 0; i < n; ++i)
-        for (const int* j = adj.begin(i); j != adj.end(i); ++j)
-          if (*j > i) { num += d[i] * d[*j]; den += 0.5 * (d[i] * d[i] + d[*j] * d[*j]); }
-      std::printf("  %s: neighbour correlation of heights %.3f, rms height %.4f\n", which ? "noisy" : "clean", num / den,
-                  std::sqrt(d.squaredNorm() / n) / h);
-    }
-    return 0;
-  }
   if (argc > 3 && std::string(argv[3]) == "U") {  // tangles: faces turned by the untangling's smoothing, and by a second one
     std::string err;
     HamiltonianCycle cycle;
     hamiltonian_cycle(f, n, CycleOptions{}, cycle, err);
     NoiseEstimate ne;
     estimate_noise(noisy, f, cycle, EmdOptions{}, ne, err);
-    NoiseAdaptiveSmoothingOptions so;
-    so.noise = std::max(ne.relative(), 1e-6);
-    so.select_cutoff = false;
-    so.first_order = kUntangleFirstOrder;
-    so.mu_scale = kUntangleMuScale;
+    const NoiseAdaptiveSmoothingOptions so = untangling_options(std::max(ne.relative(), 1e-6));
     NoiseAdaptiveSmoothingReport sr;
     Positions s1, s2;
     noise_adaptive_smooth(noisy, f, so, s1, sr, err);
     noise_adaptive_smooth(s1, f, so, s2, sr, err);
-    auto turned = [&](const Positions& a, const Positions& b) {
-      const Positions na = face_normals(a, f), nb = face_normals(b, f);
-      int c = 0;
-      for (Eigen::Index i = 0; i < f.rows(); ++i) c += na.row(i).dot(nb.row(i)) < 0;
-      return 100.0 * c / f.rows();
-    };
-    const double t1 = turned(noisy, s1), t2 = turned(s1, s2);
+    const double t1 = 100 * turned_share(noisy, s1, f), t2 = 100 * turned_share(s1, s2, f);
     std::printf("  sigma %.3f capped %d | turned by the smoothing %.2f%%, by a second %.2f%%, ratio %.1f\n", ne.relative(), int(ne.capped()), t1, t2,
                 t1 / std::max(t2, 1e-9));
     return 0;
@@ -1015,18 +968,13 @@ int main(int argc, char** argv) {
       const Positions& p = which == 0 ? clean : noisy;
       NoiseEstimate ne;
       estimate_noise(p, f, cycle, EmdOptions{}, ne, err);
-      std::vector<double> r = hinge_residuals(p, f);
+      std::vector<double> r = hinge_heights(p, f, vertex_adjacency(f, n));
       for (double& x : r) x = std::abs(x) / h;
       std::sort(r.begin(), r.end());
       auto quant = [&](double q) { return r.empty() ? 0.0 : r[size_t(q * (r.size() - 1))]; };
-      std::vector<double> g = hinge_residuals(p, f, std::atof(std::getenv("LAB_SPREAD") ? std::getenv("LAB_SPREAD") : "3"));
-      for (double& x : g) x = std::abs(x) / h;
-      std::sort(g.begin(), g.end());
-      const double gq10 = g.empty() ? 0.0 : g[size_t(0.1 * (g.size() - 1))] / 0.12566;
-      std::printf("  %s: imf %.4f | hinge q0.10 %.4f q0.25 %.4f q0.50 %.4f | tiny(<1e-4) %.2f | good q0.10 %.4f share %.2f\n", which == 0 ? "clean" : "noisy",
-                  ne.relative(), quant(0.10) / 0.12566, quant(0.25) / 0.31864, quant(0.5) / 0.67449,
-                  double(std::lower_bound(r.begin(), r.end(), 1e-4) - r.begin()) / std::max<size_t>(1, r.size()), gq10,
-                  double(g.size()) / std::max<size_t>(1, r.size()));
+      std::printf("  %s: imf %.4f | hinge q0.10 %.4f q0.25 %.4f q0.50 %.4f | tiny(<1e-4) %.2f | capped to %.4f\n", which == 0 ? "clean" : "noisy",
+                  ne.imf_sigma / ne.mean_edge, quant(0.10) / 0.12566, quant(0.25) / 0.31864, quant(0.5) / 0.67449,
+                  double(std::lower_bound(r.begin(), r.end(), 1e-4) - r.begin()) / std::max<size_t>(1, r.size()), ne.relative());
     }
     return 0;
   }
@@ -1121,20 +1069,10 @@ int main(int argc, char** argv) {
     feature_preserving_denoise(noisy, f, o, with, r1, err);
     o.untangle = false;
     feature_preserving_denoise(noisy, f, o, without, r2, err);
-    NoiseAdaptiveSmoothingOptions s;
-    s.noise = r1.sigma_used;
-    s.select_cutoff = false;
-    s.first_order = kUntangleFirstOrder;
-    s.mu_scale = kUntangleMuScale;
     Positions smoothed;
     NoiseAdaptiveSmoothingReport sr;
-    noise_adaptive_smooth(noisy, f, s, smoothed, sr, err);
-    auto share = [&](const Positions& p) {
-      const Positions a = face_normals(p, f), b = face_normals(smoothed, f);
-      int c = 0;
-      for (Eigen::Index i = 0; i < f.rows(); ++i) c += a.row(i).dot(b.row(i)) < 0;
-      return double(c) / f.rows();
-    };
+    noise_adaptive_smooth(noisy, f, untangling_options(r1.sigma_used), smoothed, sr, err);
+    auto share = [&](const Positions& p) { return turned_share(p, smoothed, f); };
     char name[100];
     std::snprintf(name, sizeof name, "untangled %d (input share %.4f)", int(r1.untangled), share(noisy));
     show(name, with);
