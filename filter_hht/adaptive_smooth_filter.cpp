@@ -65,10 +65,11 @@ bool apply(FilterRun& run) {
                   "(x mean edge)")
               .arg(report.mu, 0, 'f', 3).arg(options.strength).arg(report.iterations)
               .arg(report.rms_displacement / edge, 0, 'f', 3).arg(report.max_displacement / edge, 0, 'f', 3));
-  if (report.unfolded_vertices > 0 || report.held_vertices > 0 || report.restored_faces > 0)
+  if (report.unfolded_vertices > 0 || report.held_vertices > 0 || report.restored_faces > 0 || report.unturned_faces > 0)
     run.log(QString("  %1 vertices moved to their neighbours' centroid to undo folds, %2 held within %3 noise sigmas, "
-                    "%4 faces turned over put back")
-                .arg(report.unfolded_vertices).arg(report.held_vertices).arg(hht::kMoveRadius).arg(report.restored_faces));
+                    "%4 faces turned over put back, %5 more moved back until no longer turned over (wrinkles of the triangulation)")
+                .arg(report.unfolded_vertices).arg(report.held_vertices).arg(hht::kMoveRadius).arg(report.restored_faces)
+                .arg(report.unturned_faces));
   run.log(stage_times_line(report.stages));
   return true;
 }

@@ -200,6 +200,7 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     NoiseAdaptiveSmoothingOptions smoothing;
     smoothing.noise = sigma;
     smoothing.select_cutoff = false;  // the noise level's cut-off: the refinement was measured from it
+    smoothing.unturn_wrinkles = false;  // the tangle test counts the faces this smoothing turns
     smoothing.first_order = options.untangle_first_order;
     smoothing.mu_scale = options.untangle_mu_scale;
     NoiseAdaptiveSmoothingReport smoothing_report;

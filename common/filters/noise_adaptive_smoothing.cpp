@@ -199,6 +199,7 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
   report.unfolded_vertices = unfold(x, faces, adjacency);
   report.held_vertices = hold_within_noise(x, v, kMoveRadius * sigma * std::max(1.0, options.strength));
   report.restored_faces = restore_turned_faces_that_fit(v, faces, kRestoredFaceTilt, x);
+  if (options.unturn_wrinkles) report.unturned_faces = unturn_few_turned_faces(v, faces, kWrinkleShare, x);
   result = (x * edge).rowwise() + centre;
   if (!result.allFinite()) {
     error = "the solve produced non-finite positions";

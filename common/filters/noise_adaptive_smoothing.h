@@ -29,7 +29,10 @@
 //      22.8, in 1e-4 of the diagonal; ours, docs/quality.md);
 //   6. faces the smoothing turned over go back to the input where they fit the smoothed surface
 //      (within kRestoredFaceTilt; flip_guard.h): on clean irregular meshes these are wrinkles of
-//      the triangulation, which a noisy face does not pass for (ours, docs/quality.md).
+//      the triangulation, which a noisy face does not pass for (ours, docs/quality.md);
+//   7. if the faces still turned over are few (kWrinkleShare of all faces at most), they are
+//      wrinkles too and each goes back the least share of the way that un-turns it (flip_guard.h;
+//      ours: noise turns many more, and there this step would undo the smoothing's work).
 // Why not the paper's curvature filter for this: docs/quality.md (filtering along one cycle
 // leaves stripes, the keep-tangential target carries the input's noise into the result, and
 // the cotangent Laplacian breaks on slivers).
@@ -56,6 +59,9 @@ constexpr double kMoveRadius = 4.0;
 // A face the smoothing turned over goes back if, put back, it is within this of the smoothed
 // surface (degrees).
 constexpr double kRestoredFaceTilt = 60.0;
+// Step 7 runs when at most this share of the faces is still turned over: clean irregular meshes
+// have 0.02-0.08% (cow, femur, bull, man), at 10% noise 0.28-1.1% (docs/quality.md item 13).
+constexpr double kWrinkleShare = 0.0015;
 // The cross-validated cut-off is divided by this: its squared risk has its minimum at a weaker
 // filter than the mean angle error's (docs/quality.md items 5 and 10).
 constexpr double kSelectionBias = 1.2;
@@ -72,6 +78,7 @@ struct NoiseAdaptiveSmoothingOptions {
   double strength = 1;         // > 1 smooths more, < 1 less
   double mu = 0;               // > 0: this cut-off instead of the one the noise sets (experiments)
   bool select_cutoff = true;   // a stronger cut-off than the noise level's where cross-validation finds one
+  bool unturn_wrinkles = true;  // step 7 (the denoiser's untangling counts the smoothing's own turns)
   // Experiments (bench/quality_lab, docs/quality.md items 8-10): the tangential cap's factor
   // (infinity: no cap), the noise law's scale, how much weaker than the noise law's cut-off the
   // cross-validation may choose, the low-pass's first-order weight (0: second order only), and
@@ -98,6 +105,7 @@ struct NoiseAdaptiveSmoothingReport {
   int unfolded_vertices = 0;   // moved to their one-ring centroid to undo a fold
   int held_vertices = 0;       // held at kMoveRadius noise sigmas from where they were
   int restored_faces = 0;      // turned over by the smoothing, put back (step 6)
+  int unturned_faces = 0;      // still turned, few: moved back until no longer turned (step 7)
   int iterations = 0;          // conjugate gradient iterations of the solve
   double error_bound = 0;      // largest position error of the solve, at most, / bbox diagonal
   std::vector<StageTime> stages;

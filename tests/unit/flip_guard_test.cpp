@@ -64,6 +64,44 @@ TEST(FlipGuard, LeavesAFoldOfTheInputTurned) {
   EXPECT_EQ(result, m.positions);
 }
 
+// A wrinkle laid over: the face goes back only part of the way, enough to stand the right way up.
+TEST(FlipGuard, UnturnsAFewTurnedFacesPartway) {
+  const test::ArrayMesh m = test::sphere(3);
+  Positions result = with_face_turned(m.positions, m.faces, 0);
+  ASSERT_EQ(turned_faces(m.positions, result, m.faces), 1);
+  EXPECT_EQ(unturn_few_turned_faces(m.positions, m.faces, 0.01, result), 1);
+  EXPECT_EQ(turned_faces(m.positions, result, m.faces), 0);
+  const int v = m.faces(0, 0);
+  EXPECT_NE(result.row(v), m.positions.row(v));  // part of the way, not all of it
+  for (Eigen::Index i = 0; i < result.rows(); ++i) {
+    if (i == v) continue;
+    EXPECT_EQ(result.row(i), m.positions.row(i)) << i;
+  }
+}
+
+// Many faces turned over is what noise does: the smoothing's turning stays.
+TEST(FlipGuard, LeavesManyTurnedFacesAlone) {
+  const test::ArrayMesh m = test::sphere(3);
+  Positions result = m.positions;
+  for (Eigen::Index f = 0; f < m.faces.rows(); f += 97) result = with_face_turned(result, m.faces, f);
+  const int turned = turned_faces(m.positions, result, m.faces);
+  ASSERT_GT(turned, 5);
+  const Positions before = result;
+  EXPECT_EQ(unturn_few_turned_faces(m.positions, m.faces, 5.0 / static_cast<double>(m.faces.rows()), result), 0);
+  EXPECT_EQ(result, before);
+  // allowed more, it un-turns them all (a move often un-turns a neighbour as well)
+  EXPECT_GT(unturn_few_turned_faces(m.positions, m.faces, 0.5, result), 0);
+  EXPECT_EQ(turned_faces(m.positions, result, m.faces), 0);
+}
+
+TEST(FlipGuard, UnturnLeavesAFoldOfTheInputTurned) {
+  const test::ArrayMesh m = test::sphere(3);
+  const Positions folded = with_face_turned(m.positions, m.faces, 0);
+  Positions result = m.positions;
+  EXPECT_EQ(unturn_few_turned_faces(folded, m.faces, 0.5, result), 0);
+  EXPECT_EQ(result, m.positions);
+}
+
 // enhance.mlx on a clean irregular mesh turned 171 of bull's faces over before the guard.
 TEST(FlipGuard, EnhancementTurnsNoFaceOver) {
   const test::ArrayMesh bull = test::load_data_mesh("bull");
