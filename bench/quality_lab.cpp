@@ -403,7 +403,7 @@ int main(int argc, char** argv) {
     int folded = 0;
     g_clean_folded.assign(f.rows(), 0);
     for (Eigen::Index i = 0; i < f.rows(); ++i) {
-      Eigen::RowVector3d s = vn.row(f(i, 0)).normalized() + vn.row(f(i, 1)).normalized() + vn.row(f(i, 2)).normalized();
+      Eigen::RowVector3d s = vn.row(f(i, 0)) + vn.row(f(i, 1)) + vn.row(f(i, 2));  // unnormalised, as the harness sums them
       g_clean_folded[i] = fn.row(i).dot(s) < 0;
       folded += g_clean_folded[i];
     }
@@ -978,6 +978,61 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "Q") {  // noise estimate from 2-ring quadric fits: the leave-one-out residual of each vertex
+    std::string err;
+    HamiltonianCycle cycle;
+    hamiltonian_cycle(f, n, CycleOptions{}, cycle, err);
+    const VertexAdjacency a = vertex_adjacency(f, n);
+    for (int which = 0; which < 2; ++which) {
+      const Positions& p = which == 0 ? clean : noisy;
+      NoiseEstimate ne;
+      estimate_noise(p, f, cycle, EmdOptions{}, ne, err);
+      const Positions nrm = area_weighted_vertex_normals(p, f);
+      std::vector<double> r;
+      std::vector<int> ring;
+      std::vector<int> mark(n, -1);
+      for (int i = 0; i < n; ++i) {
+        if (a.boundary[i] || a.valence(i) == 0) continue;
+        ring.clear();
+        mark[i] = i;
+        for (const int* j = a.begin(i); j != a.end(i); ++j) if (mark[*j] != i) { mark[*j] = i; ring.push_back(*j); }
+        const size_t first = ring.size();
+        for (size_t k = 0; k < first; ++k)
+          for (const int* j = a.begin(ring[k]); j != a.end(ring[k]); ++j) if (mark[*j] != i) { mark[*j] = i; ring.push_back(*j); }
+        if (ring.size() < 10) continue;
+        Eigen::Vector3d nz = nrm.row(i).transpose();
+        if (nz.norm() == 0) continue;
+        nz.normalize();
+        Eigen::Vector3d t1 = nz.unitOrthogonal(), t2 = nz.cross(t1);
+        Eigen::MatrixXd A(ring.size(), 6);
+        Eigen::VectorXd z(ring.size());
+        double scale = 0;
+        for (size_t k = 0; k < ring.size(); ++k) scale += (p.row(ring[k]) - p.row(i)).norm();
+        scale /= ring.size();
+        for (size_t k = 0; k < ring.size(); ++k) {
+          Eigen::Vector3d d = (p.row(ring[k]) - p.row(i)).transpose() / scale;
+          const double x = d.dot(t1), y = d.dot(t2);
+          A.row(k) << 1, x, y, x * x, x * y, y * y;
+          z[k] = d.dot(nz) * scale;
+        }
+        Eigen::MatrixXd AtA = A.transpose() * A;
+        Eigen::LDLT<Eigen::MatrixXd> ldlt(AtA);
+        Eigen::VectorXd e0 = Eigen::VectorXd::Zero(6);
+        e0[0] = 1;
+        Eigen::VectorXd c = ldlt.solve(e0);        // (A^T A)^-1 e0
+        Eigen::VectorXd w = A * c;                 // prediction at 0 = w . z
+        if (!w.allFinite()) continue;
+        r.push_back(-w.dot(z) / std::sqrt(1 + w.squaredNorm()));
+      }
+      std::vector<double> ab = r;
+      for (double& x : ab) x = std::abs(x) / h;
+      std::sort(ab.begin(), ab.end());
+      auto quant = [&](double q) { return ab.empty() ? 0.0 : ab[size_t(q * (ab.size() - 1))]; };
+      std::printf("  %s: imf %.4f capped %.4f | quadric q0.25 %.4f q0.50 %.4f q0.75 %.4f (n %zu)\n", which == 0 ? "clean" : "noisy",
+                  ne.imf_sigma / ne.mean_edge, ne.relative(), quant(0.25) / 0.31864, quant(0.5) / 0.67449, quant(0.75) / 1.15035, ab.size());
+    }
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "F") {  // the noise estimate's floor: one-ring heights with the curvature's share taken out
     std::string err;
     HamiltonianCycle cycle;
@@ -1192,8 +1247,8 @@ int main(int argc, char** argv) {
     Positions nas;
     NoiseAdaptiveSmoothingReport r;
     noise_adaptive_smooth(noisy, f, lab_options(), nas, r, err);
-    char name[64];
-    std::snprintf(name, sizeof name, "NAS (put back within %.0f: %d)", kRestoredFaceTilt, r.restored_faces);
+    char name[80];
+    std::snprintf(name, sizeof name, "NAS (put back within %.0f: %d, un-turned %d)", kRestoredFaceTilt, r.restored_faces, r.unturned_faces);
     show(name, nas);
     for (double limit : {80.0, 90.0}) {
       Positions out = nas;
@@ -1201,53 +1256,32 @@ int main(int argc, char** argv) {
       std::snprintf(name, sizeof name, "+ put back within %.0f (%d)", limit, restored);
       show(name, out);
     }
-    // Partial put-back: the smallest share of the way back that un-turns the face without turning
-    // a neighbour or pointing one against the smoothed surface.
-    for (double limit : {20.0, 30.0, 45.0, 60.0}) {
-      Positions out = nas;
-      const Positions in_n = area_weighted_vertex_normals(noisy, f), surf = area_weighted_vertex_normals(nas, f);
-      std::vector<std::vector<int>> fo(n);
-      for (Eigen::Index i = 0; i < f.rows(); ++i)
-        for (int k = 0; k < 3; ++k) fo[f(i, k)].push_back(int(i));
-      auto av = [&](const Positions& p, Eigen::Index i) {
-        Eigen::RowVector3d a = p.row(f(i, 0));
-        return Eigen::RowVector3d((p.row(f(i, 1)) - a).cross(p.row(f(i, 2)) - a));
-      };
-      auto around = [&](const Positions& nn, Eigen::Index i) {
-        return Eigen::RowVector3d(nn.row(f(i, 0)) + nn.row(f(i, 1)) + nn.row(f(i, 2)));
-      };
-      auto turned = [&](const Positions& p, Eigen::Index i) { return av(noisy, i).dot(av(p, i)) < 0; };
-      const double cmin = std::cos(limit * M_PI / 180);
-      int fixed = 0;
-      for (int pass = 0; pass < 4; ++pass) {
-        const int before = fixed;
-        for (Eigen::Index i = 0; i < f.rows(); ++i) {
-          if (av(noisy, i).squaredNorm() == 0 || !turned(out, i)) continue;
-          if (av(noisy, i).dot(around(in_n, i)) < 0) continue;
-          std::set<int> ring;
-          for (int k = 0; k < 3; ++k)
-            for (int g : fo[f(i, k)]) ring.insert(g);
-          std::map<int, bool> was;
-          for (int g : ring) was[g] = turned(out, g);
-          Eigen::Matrix3d kept;
-          for (int k = 0; k < 3; ++k) kept.row(k) = out.row(f(i, k));
-          bool ok = false;
-          for (int step = 1; step <= 20 && !ok; ++step) {
-            const double t = step / 20.0;
-            for (int k = 0; k < 3; ++k) out.row(f(i, k)) = kept.row(k) + t * (noisy.row(f(i, k)) - kept.row(k));
-            if (turned(out, i)) continue;
-            ok = true;
-            const Eigen::RowVector3d a = av(out, i), s = around(surf, i);
-            if (a.dot(s) < cmin * a.norm() * s.norm()) ok = false;
-            for (int g : ring)
-              if (g != i && ((!was[g] && turned(out, g)) || av(out, g).dot(around(surf, g)) < 0)) ok = false;
-          }
-          if (ok) ++fixed;
-          else for (int k = 0; k < 3; ++k) out.row(f(i, k)) = kept.row(k);
-        }
-        if (fixed == before) break;
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[3]) == "W") {  // the triangulation's own drift taken out instead of the tangential cap
+    std::string err;
+    Positions shipped, loose, again;
+    NoiseAdaptiveSmoothingReport r0, r1, r2;
+    noise_adaptive_smooth(noisy, f, lab_options(), shipped, r0, err);
+    show("NAS shipped (cap 7)", shipped);
+    NoiseAdaptiveSmoothingOptions o = lab_options();
+    o.tangential_cap = 1e9;
+    noise_adaptive_smooth(noisy, f, o, loose, r1, err);
+    show("NAS no cap", loose);
+    NoiseAdaptiveSmoothingOptions o2 = o;
+    o2.mu = r1.mu;
+    o2.noise = r1.sigma_used;
+    o2.select_cutoff = false;
+    noise_adaptive_smooth(loose, f, o2, again, r2, err);
+    const Positions nrm = area_weighted_vertex_normals(loose, f);
+    for (double share : {0.5, 1.0, 1.5}) {
+      Positions out = loose;
+      for (int i = 0; i < n; ++i) {
+        const Eigen::RowVector3d d = again.row(i) - loose.row(i), nn = nrm.row(i);
+        out.row(i) -= share * (d - d.dot(nn) * nn);
       }
-      std::snprintf(name, sizeof name, "+ partial within %.0f (%d)", limit, fixed);
+      char name[64];
+      std::snprintf(name, sizeof name, "no cap, drift x%.1f out", share);
       show(name, out);
     }
     return 0;
