@@ -1033,6 +1033,49 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "C") {  // correlation of the one-ring heights across edges and at two edges
+    const VertexAdjacency a = vertex_adjacency(f, n);
+    for (int which = 0; which < 2; ++which) {
+      const Positions& p = which == 0 ? clean : noisy;
+      Eigen::VectorXd hh = one_ring_heights(p, f, a);
+      const double mean = hh.mean();
+      hh.array() -= mean;
+      double v0 = hh.squaredNorm() / n, c1 = 0, c2 = 0;
+      long n1 = 0, n2 = 0;
+      std::vector<int> mark(n, -1);
+      for (int i = 0; i < n; ++i) {
+        mark[i] = i;
+        for (const int* j = a.begin(i); j != a.end(i); ++j) { mark[*j] = i; c1 += hh[i] * hh[*j]; ++n1; }
+        for (const int* j = a.begin(i); j != a.end(i); ++j)
+          for (const int* k = a.begin(*j); k != a.end(*j); ++k)
+            if (mark[*k] != i) { mark[*k] = i; c2 += hh[i] * hh[*k]; ++n2; }
+      }
+      std::printf("  %s: rms height %.4f  corr lag1 %.3f  lag2 %.3f\n", which == 0 ? "clean" : "noisy", std::sqrt(v0) / h, c1 / n1 / v0, c2 / n2 / v0);
+    }
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[3]) == "X") {  // how white the smoothing's residual is: its normal part's correlation across edges
+    std::string err;
+    const VertexAdjacency a = vertex_adjacency(f, n);
+    for (int which = 0; which < 2; ++which) {
+      const Positions& p = which == 0 ? clean : noisy;
+      Positions out;
+      NoiseAdaptiveSmoothingReport r;
+      noise_adaptive_smooth(p, f, lab_options(), out, r, err);
+      const Positions nrm = area_weighted_vertex_normals(out, f);
+      Eigen::VectorXd res(n);
+      for (int i = 0; i < n; ++i) res[i] = (p.row(i) - out.row(i)).dot(nrm.row(i));
+      res.array() -= res.mean();
+      double v0 = res.squaredNorm() / n, c1 = 0;
+      long n1 = 0;
+      for (int i = 0; i < n; ++i)
+        for (const int* j = a.begin(i); j != a.end(i); ++j) { c1 += res[i] * res[*j]; ++n1; }
+      Score sc = score(out, clean, f), in = score(p, clean, f);
+      std::printf("  %s: sigma %.3f  residual rms %.4f corr lag1 %.3f | E_a %.2f -> %.2f\n", which == 0 ? "clean" : "noisy", r.sigma_used,
+                  std::sqrt(v0) / h, c1 / n1 / v0, in.ea, sc.ea);
+    }
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "F") {  // the noise estimate's floor: one-ring heights with the curvature's share taken out
     std::string err;
     HamiltonianCycle cycle;
