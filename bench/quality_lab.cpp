@@ -382,7 +382,7 @@ int main(int argc, char** argv) {
   Positions noisy = clean;
   const bool along_normals = argc > 4 && std::string(argv[4]) == "normal";
   if (along_normals) {
-    noisy = add_gaussian_noise(clean, f, 100 * level, NoiseDirection::Normal, 11);
+    noisy = add_gaussian_noise(clean, f, 100 * level, NoiseDirection::Normal, std::getenv("LAB_SEED") ? std::atoi(std::getenv("LAB_SEED")) : 11);
   } else {
     for (int i = 0; i < n; ++i)
       for (int k = 0; k < 3; ++k) noisy(i, k) += g(rng);
