@@ -1329,6 +1329,21 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "Y") {  // the refinement's range width: wide away from the smoothing's creases, or one width
+    std::string err;
+    for (double wide : {kRefineSmoothSigma, 0.0}) {
+      DenoiseOptions d;
+      d.refine_smooth_sigma = wide > 0 && std::getenv("LAB_WIDE") ? std::atof(std::getenv("LAB_WIDE")) : wide;
+      Positions out;
+      DenoiseReport rep;
+      if (!feature_preserving_denoise(noisy, f, d, out, rep, err)) { std::printf("%s\n", err.c_str()); return 1; }
+      char label[80];
+      std::snprintf(label, sizeof label, "denoise, %s (%.0f%% narrow)", wide > 0 ? "wide off creases" : "one width",
+                    100 * std::max(0.0, rep.refine_near_creases));
+      show(label, out);
+    }
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "k") {  // normal error near and away from the clean creases
     std::string err;
     Positions nas, den;
@@ -1336,6 +1351,7 @@ int main(int argc, char** argv) {
     noise_adaptive_smooth(noisy, f, lab_options(), nas, r, err);
     DenoiseOptions d;
     d.smooth_surfaces_by_smoothing = false;
+    if (const char* x = std::getenv("LAB_RSIGMA")) d.refine_normal_sigma = std::atof(x);
     DenoiseReport rep;
     feature_preserving_denoise(noisy, f, d, den, rep, err);
     // faces within one ring of an edge whose clean dihedral exceeds 25 degrees

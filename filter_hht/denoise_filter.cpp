@@ -197,6 +197,11 @@ bool apply(FilterRun& run) {
   } else if (report.refine_normal_passes > 0 && o.refine_vertex_iterations > 0) {
     run.log(QString("  refinement: %1 round(s) of %2 guided normal filtering passes and %3 vertex update iterations")
                 .arg(report.refine_rounds).arg(report.refine_normal_passes).arg(o.refine_vertex_iterations));
+    if (report.refine_near_creases >= 0)
+      run.log(QString("  range width %1 on the %2% of the faces near the smoothed mesh's creases (sharper than %3 degrees), "
+                      "%4 elsewhere")
+                  .arg(o.refine_normal_sigma).arg(100 * report.refine_near_creases, 0, 'f', 1).arg(hht::kCreaseDihedral)
+                  .arg(o.refine_smooth_sigma));
     if (!report.refine_steps.empty()) {
       QStringList moves;
       for (double m : report.refine_steps) moves << QString::number(m, 'f', 3);

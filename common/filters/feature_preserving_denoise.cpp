@@ -1,6 +1,7 @@
 #include "filters/feature_preserving_denoise.h"
 
 #include "mesh/crease_contrast.h"
+#include "mesh/faces_near_creases.h"
 
 #include "mesh/mesh_checks.h"
 #include "evaluation/gaussian_noise.h"
@@ -194,6 +195,7 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
   }
 
   Positions start = positions;
+  std::vector<unsigned char> near_creases;  // of the noise-level smoothing, for the refinement's range widths
   const bool route = options.smooth_surfaces_by_smoothing && !options.paper_stage;
   if (options.untangle || route) {
     step(8, "Untangling: noise-adaptive smoothing");
@@ -221,6 +223,7 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     // A surface without sharp creases (organic): the guided refinement, made for creases, would
     // facet it; the adaptive smoothing with its cross-validated cut-off is the better result.
     report.crease_contrast = crease_contrast(smoothed, faces);
+    near_creases = faces_near_creases(smoothed, faces, kCreaseDihedral);
     const bool no_creases = report.crease_contrast < kCreaseContrast;
     report.flat_parts_refined = no_creases && options.refine_flat_parts && report.noise.capped() && !report.untangled;
     if (route && no_creases && !report.flat_parts_refined) {
@@ -260,6 +263,13 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     refine.rounds = 1;
     refine.normal_passes = normal_passes;
     refine.sigma = options.refine_normal_sigma;
+    if (!near_creases.empty() && options.refine_smooth_sigma > options.refine_normal_sigma) {
+      refine.face_sigma.resize(near_creases.size());
+      for (size_t f = 0; f < near_creases.size(); ++f)
+        refine.face_sigma[f] = near_creases[f] ? options.refine_normal_sigma : options.refine_smooth_sigma;
+      report.refine_near_creases =
+          static_cast<double>(std::count(near_creases.begin(), near_creases.end(), 1)) / static_cast<double>(near_creases.size());
+    }
     refine.vertex_iterations = options.refine_vertex_iterations;
     const double edge = mean_edge_length(positions, faces);
     const Positions rebuilt = result;

@@ -18,7 +18,9 @@
 //  - refinement: face normals cleaned by guided normal filtering, which keeps creases, and the
 //    vertices fitted to them (Sun et al. 2007), in rounds whose number the noise sets (below
 //    5% of the mean edge, one round of fewer passes)
-//    (guided_normal_denoise.h);
+//    (guided_normal_denoise.h); the filter's range width is kRefineSmoothSigma away from the
+//    creases of the noise-level smoothing (faces_near_creases.h, kCreaseDihedral): at the creases
+//    the narrow width keeps them, elsewhere the surface's own curvature needs the wide one;
 //  - surfaces without sharp creases (crease_contrast.h of the smoothed mesh below kCreaseContrast)
 //    get the adaptive smoothing, cross-validated cut-off, as the result instead: the refinement
 //    facets them; not a mesh with exactly flat parts (its noise estimate capped by the flat
@@ -62,6 +64,12 @@ constexpr double kRefineMoveToNoise = 0.75;
 // refinement: on the corpus organic meshes read 5-9, CAD parts with creases 9.5-22 (docs/quality.md).
 constexpr double kCreaseContrast = 9.0;
 
+// The refinement's range width on faces not within one ring of an edge sharper than
+// kCreaseDihedral degrees on the noise-level smoothing (docs/quality.md item 14): the narrow
+// width there (refine_normal_sigma) left turbine's curved blades faceted.
+constexpr double kRefineSmoothSigma = 0.45;
+constexpr double kCreaseDihedral = 30.0;
+
 // The untangling's smoothing (and the crease contrast measured on it) keeps the second-order
 // filter at the noise law's scale that the refinement, kTangledShare and kCreaseContrast were
 // measured with: with the adaptive smoothing's first-order term as the start, the refinement did
@@ -97,6 +105,7 @@ struct DenoiseOptions {
   int refine_rounds = 0;              // 0: set by the noise (kNoisePerRound) and by each round's move
   int refine_normal_passes = 8;       // guided normal filtering passes per round; 0: no refinement
   double refine_normal_sigma = 0.25;  // range width of that filter, on unit normals (~15 degrees)
+  double refine_smooth_sigma = kRefineSmoothSigma;  // away from creases; at most refine_normal_sigma: one width everywhere
   int refine_vertex_iterations = 20;  // vertex update iterations towards the filtered normals
   double refine_drift_step = kRoundDriftStep;        // with rounds set by the noise (experiments)
   double refine_converged_step = kRoundConvergedStep;
@@ -119,6 +128,7 @@ struct DenoiseReport {
   bool refine_round_undone = false;  // the last of refine_steps was undone and ended the rounds
   int refine_normal_passes = 0;  // per round, as used
   double refine_scaled = 1;      // < 1: the refinement's move was scaled down to the noise's RMS
+  double refine_near_creases = -1;  // share of the faces given the narrow range width (-1: one width for all)
   bool features_detected = false;  // report.type and feature_lines hold the input's features
   int feature_vertices = 0;
   int corners = 0;

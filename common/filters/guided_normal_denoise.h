@@ -9,6 +9,7 @@
 #pragma once
 
 #include <functional>
+#include <vector>
 
 #include "mesh/mesh_arrays.h"
 
@@ -21,6 +22,7 @@ struct GuidedNormalDenoiseOptions {
   int normal_passes = 8;       // guided normal filtering passes per round
   double sigma = 0.35;         // range width on unit guidance normals (~20 degrees)
   int vertex_iterations = 20;  // vertex update iterations per round
+  std::vector<double> face_sigma;  // each face's own range width instead of `sigma` (empty: none)
 };
 
 // Fails like guided_face_normals on broken input (no faces, non-manifold, non-finite).

@@ -176,7 +176,8 @@ Positions guidance(const Topology& topo, const FaceGeometry& g, const Positions&
 // Guided normal filtering: each pass, a joint bilateral filter over the faces sharing a vertex
 // with each face, weighted by area, centroid distance and the difference of the guidance
 // normals, so faces on the two sides of a crease barely mix.
-Positions filter_normals(const Topology& topo, const FaceGeometry& g, int iterations, double sigma_r) {
+Positions filter_normals(const Topology& topo, const FaceGeometry& g, int iterations, double sigma_r,
+                         const std::vector<double>& face_sigma_r = {}) {
   const int nf = static_cast<int>(topo.faces.rows());
   double spacing = 0;
   int interior = 0;
@@ -187,6 +188,9 @@ Positions filter_normals(const Topology& topo, const FaceGeometry& g, int iterat
     }
   const double sigma_s = interior > 0 ? spacing / interior : 1.0;
   const double inv_s = 1.0 / (2 * sigma_s * sigma_s), inv_r = 1.0 / (2 * sigma_r * sigma_r);
+  // A face's own range width, where given (each face weighs its neighbours with its own kernel).
+  std::vector<double> face_inv_r;
+  for (double w : face_sigma_r) face_inv_r.push_back(1.0 / (2 * w * w));
   // The weights are held in float: areas in units of a power of two near their mean, so that
   // coordinates of 1e30 (areas of 1e60) or 1e-20 neither overflow nor vanish, and, a power of
   // two scaling exactly, the filtered normals of an ordinary mesh are unchanged to the bit.
@@ -208,10 +212,11 @@ Positions filter_normals(const Topology& topo, const FaceGeometry& g, int iterat
     const Positions guide = guidance(topo, g, n);
     parallel_for(0, nf, [&](int first, int last) {
       for (int f = first; f < last; ++f) {
+        const double inv_rf = face_inv_r.empty() ? inv_r : face_inv_r[f];
         Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
         for (int i = topo.face_faces.begin(f); i < topo.face_faces.end(f); ++i) {
           const int j = topo.face_faces.items[i];
-          const float range = static_cast<float>((guide.row(f) - guide.row(j)).squaredNorm() * inv_r);
+          const float range = static_cast<float>((guide.row(f) - guide.row(j)).squaredNorm() * inv_rf);
           sum += (spatial[i] * std::exp(-range)) * n.row(j);
         }
         const double len = sum.norm();
@@ -437,10 +442,19 @@ bool detect_sharp_features(const Positions& positions, const Faces& faces, const
 }
 
 bool guided_face_normals(const Positions& positions, const Faces& faces, int iterations, double sigma,
-                         Positions& normals, std::string& error) {
+                         Positions& normals, std::string& error, const std::vector<double>& face_sigma) {
+  if (!face_sigma.empty() && static_cast<Eigen::Index>(face_sigma.size()) != faces.rows()) {
+    error = "one range width per face expected";
+    return false;
+  }
+  for (double w : face_sigma)
+    if (!(w > 0)) {
+      error = "range widths must be positive";
+      return false;
+    }
   Topology topo;
   if (!build_topology(faces, static_cast<int>(positions.rows()), topo, error)) return false;
-  normals = filter_normals(topo, face_geometry(positions, faces), iterations, sigma);
+  normals = filter_normals(topo, face_geometry(positions, faces), iterations, sigma, face_sigma);
   return true;
 }
 

@@ -68,9 +68,10 @@ bool detect_sharp_features(const Positions& positions, const Faces& faces, const
                            std::vector<FeatureType>& type, std::string& error);
 
 // The face normals the detector votes with: guided normal filtering (see above), `iterations`
-// passes with range width `sigma`. Used on its own by the denoiser's refinement. Fails like
+// passes with range width `sigma`, or each face's own width from `face_sigma` (one per face,
+// positive) where that is given. Used on its own by the denoiser's refinement. Fails like
 // detect_sharp_features on broken input.
 bool guided_face_normals(const Positions& positions, const Faces& faces, int iterations, double sigma,
-                         Positions& normals, std::string& error);
+                         Positions& normals, std::string& error, const std::vector<double>& face_sigma = {});
 
 }  // namespace hht

@@ -34,8 +34,12 @@ TEST(MeshlabserverDenoise, CompareIdenticalMeshesGivesZero) {
 TEST(MeshlabserverDenoise, NoisyCubeDenoisedThenCompared) {
   TriMesh noisy, denoised;  // the same noise (same seed) in both runs
   load(run_meshlabserver(data_mesh("cube-meshed"), chain_scripts("cube_noise", {"add_noise.mlx"}), "cube_noisy"), noisy);
-  load(run_meshlabserver(data_mesh("cube-meshed"), chain_scripts("cube_denoise", {"add_noise.mlx", "denoise.mlx"}),
-                         "cube_denoised"), denoised);
+  const ServerRun run = run_meshlabserver(data_mesh("cube-meshed"), chain_scripts("cube_denoise", {"add_noise.mlx", "denoise.mlx"}),
+                                          "cube_denoised");
+  load(run, denoised);
+  // the refinement's range widths: narrow at the cube's edges, wide on its faces
+  EXPECT_NE(run.log.find("range width 0.25 on the"), std::string::npos) << run.log;
+  EXPECT_NE(run.log.find("0.45 elsewhere"), std::string::npos) << run.log;
   const ServerRun before = compare(data_mesh("cube-meshed"), output_path("cube_noisy.ply"), "compare_noisy");
   const ServerRun after = compare(data_mesh("cube-meshed"), output_path("cube_denoised.ply"), "compare_denoised");
   ASSERT_EQ(before.exit_code, 0) << before.log;

@@ -46,5 +46,29 @@ TEST(GuidedNormalDenoise, NoRoundIsTheIdentityAndBadOptionsAreRefused) {
   EXPECT_FALSE(guided_normal_denoise(m.positions, Faces(0, 3), {}, out, error));
 }
 
+// Each face's own range width: the same width for all is the uniform filter to the bit, a wider
+// one smooths more, and a list of the wrong length or with a width of 0 is refused.
+TEST(GuidedNormalDenoise, RangeWidthPerFace) {
+  const test::ArrayMesh m = test::load_data_mesh("fandisk");
+  const Positions noisy = add_gaussian_noise(m.positions, m.faces, 20, NoiseDirection::Normal, 11);
+  GuidedNormalDenoiseOptions same;
+  same.face_sigma.assign(m.faces.rows(), same.sigma);
+  EXPECT_EQ(denoise(noisy, m.faces, same), denoise(noisy, m.faces));
+  GuidedNormalDenoiseOptions wide;
+  wide.face_sigma.assign(m.faces.rows(), 2.0);
+  GuidedNormalDenoiseOptions uniform_wide;
+  uniform_wide.sigma = 2.0;
+  EXPECT_EQ(denoise(noisy, m.faces, wide), denoise(noisy, m.faces, uniform_wide));
+  EXPECT_NE(denoise(noisy, m.faces, wide), denoise(noisy, m.faces));
+  Positions out;
+  std::string error;
+  GuidedNormalDenoiseOptions short_list;
+  short_list.face_sigma.assign(m.faces.rows() - 1, 0.3);
+  EXPECT_FALSE(guided_normal_denoise(noisy, m.faces, short_list, out, error));
+  GuidedNormalDenoiseOptions zero = same;
+  zero.face_sigma[5] = 0;
+  EXPECT_FALSE(guided_normal_denoise(noisy, m.faces, zero, out, error));
+}
+
 }  // namespace
 }  // namespace hht
