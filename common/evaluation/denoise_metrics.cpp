@@ -187,6 +187,24 @@ double mean_face_normal_error_degrees(const Positions& result, const Positions& 
   return count > 0 ? sum / count : 0.0;
 }
 
+int flipped_faces(const Positions& result, const Positions& reference, const Faces& faces) {
+  check_input(result, reference, faces);
+  const auto area = [&](const Positions& p, Eigen::Index f) {
+    const Eigen::RowVector3d a = p.row(faces(f, 0));
+    return Eigen::RowVector3d((p.row(faces(f, 1)) - a).cross(p.row(faces(f, 2)) - a));
+  };
+  Positions corner_sums = Positions::Zero(reference.rows(), 3);
+  for (Eigen::Index f = 0; f < faces.rows(); ++f)
+    for (int k = 0; k < 3; ++k) corner_sums.row(faces(f, k)) += area(reference, f);
+  int flipped = 0;
+  for (Eigen::Index f = 0; f < faces.rows(); ++f) {
+    const Eigen::RowVector3d before = area(reference, f);
+    if (before.dot(corner_sums.row(faces(f, 0)) + corner_sums.row(faces(f, 1)) + corner_sums.row(faces(f, 2))) < 0) continue;
+    flipped += before.dot(area(result, f)) < 0;
+  }
+  return flipped;
+}
+
 Eigen::VectorXd vertex_normal_error_degrees(const Positions& result, const Positions& reference, const Faces& faces) {
   check_input(result, reference, faces);
   const std::vector<double> error = face_normal_errors(result, reference, faces);

@@ -19,6 +19,11 @@ namespace hht {
 // normals. Normals follow the faces' winding, so a flipped face counts 180 degrees.
 double mean_face_normal_error_degrees(const Positions& result, const Positions& reference, const Faces& faces);
 
+// Faces turned over: the result's normal more than 90 degrees from the reference's, counted
+// over the faces not folded in the reference (pointing against the sum of their corners'
+// unnormalised area-weighted normals there): scripts/evaluate_quality.py's count.
+int flipped_faces(const Positions& result, const Positions& reference, const Faces& faces);
+
 // E_v: mean over the result's vertices of the distance to the reference surface (the closest
 // point on any reference triangle, not the corresponding vertex), divided by the diagonal of
 // the reference surface's bounding box (undivided if that diagonal is 0).

@@ -202,6 +202,26 @@ TEST(DenoiseMetrics, DegenerateFacesGiveNoNaN) {
   EXPECT_TRUE(std::isfinite(mean_distance_to_reference(reference, point, f)));
 }
 
+// A face turned over counts, the reference's own folds do not, and a tilt short of 90 degrees
+// does not either.
+TEST(DenoiseMetrics, FlippedFacesLeaveOutTheReferencesFolds) {
+  const test::ArrayMesh m = test::sphere(2);
+  EXPECT_EQ(flipped_faces(m.positions, m.positions, m.faces), 0);
+  Faces turned = m.faces;
+  turned.row(3) << m.faces(3, 0), m.faces(3, 2), m.faces(3, 1);  // that face wound the other way
+  EXPECT_EQ(flipped_faces(m.positions, m.positions, turned), 0);   // folded in the reference too
+  Positions lifted = m.positions;
+  lifted.row(m.faces(0, 0)) *= 1.05;  // a small tilt
+  EXPECT_EQ(flipped_faces(lifted, m.positions, m.faces), 0);
+  // the first vertex mirrored across the opposite edge: the face turns over
+  Positions mirrored = m.positions;
+  const Eigen::RowVector3d a = m.positions.row(m.faces(0, 1)), b = m.positions.row(m.faces(0, 2));
+  const Eigen::RowVector3d d = m.positions.row(m.faces(0, 0)) - a, edge = (b - a).normalized();
+  mirrored.row(m.faces(0, 0)) = a + 2 * d.dot(edge) * edge - d;
+  EXPECT_GE(flipped_faces(mirrored, m.positions, m.faces), 1);
+  EXPECT_THROW(flipped_faces(m.positions.topRows(3), m.positions, m.faces), std::invalid_argument);
+}
+
 TEST(DenoiseMetrics, VerticesOfNoFaceAndBadInput) {
   test::ArrayMesh m = test::sphere(2);
   m.positions.conservativeResize(m.vertices() + 1, 3);

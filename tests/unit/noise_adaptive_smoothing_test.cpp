@@ -72,26 +72,6 @@ TEST(NoiseAdaptiveSmoothing, DoesNotSlideLongEdgedVerticesAway) {
 
 // A clean irregular mesh (bull: slivers, wrinkles of the triangulation): the smoothing turned 14
 // of its faces over (not counting those folded in the input) before step 6, and keeps fewer.
-// Faces turned over that were not folded in the input (the harness's flip count on clean meshes:
-// folded is against the sum of the corners' unnormalised area-weighted normals).
-int turned_faces_not_folded_before(const Positions& input, const Positions& result, const Faces& faces) {
-  const auto area = [&](const Positions& p, Eigen::Index f) {
-    const Eigen::RowVector3d o = p.row(faces(f, 0));
-    return Eigen::RowVector3d((p.row(faces(f, 1)) - o).cross(p.row(faces(f, 2)) - o));
-  };
-  Positions corner_normals = Positions::Zero(input.rows(), 3);
-  for (Eigen::Index f = 0; f < faces.rows(); ++f)
-    for (int k = 0; k < 3; ++k) corner_normals.row(faces(f, k)) += area(input, f);
-  int turned = 0;
-  for (Eigen::Index f = 0; f < faces.rows(); ++f) {
-    const Eigen::RowVector3d corners =
-        corner_normals.row(faces(f, 0)) + corner_normals.row(faces(f, 1)) + corner_normals.row(faces(f, 2));
-    if (area(input, f).dot(corners) < 0) continue;  // folded in the input
-    turned += area(input, f).dot(area(result, f)) < 0;
-  }
-  return turned;
-}
-
 // Clean irregular meshes with slivers standing off the surface (5-8 faces turned before step 7).
 TEST(NoiseAdaptiveSmoothing, TurnsNoFaceOfACleanIrregularMeshOver) {
   for (const char* name : {"bull", "femur", "cow"}) {
@@ -99,7 +79,7 @@ TEST(NoiseAdaptiveSmoothing, TurnsNoFaceOfACleanIrregularMeshOver) {
     NoiseAdaptiveSmoothingReport report;
     const Positions ours = smooth(m.positions, m.faces, {}, &report);
     EXPECT_GT(report.unturned_faces, 0) << name;
-    EXPECT_EQ(turned_faces_not_folded_before(m.positions, ours, m.faces), 0) << name;
+    EXPECT_EQ(flipped_faces(ours, m.positions, m.faces), 0) << name;
     EXPECT_GT((ours - m.positions).rowwise().norm().maxCoeff(), 0) << name;  // it still smoothed
   }
 }
@@ -111,7 +91,7 @@ TEST(NoiseAdaptiveSmoothing, LeavesTheFacesNoiseTurnedOver) {
   NoiseAdaptiveSmoothingReport report;
   const Positions ours = smooth(noisy, m.faces, {}, &report);
   EXPECT_EQ(report.unturned_faces, 0);
-  EXPECT_GT(turned_faces_not_folded_before(noisy, ours, m.faces), kWrinkleShare * static_cast<double>(m.faces.rows()));
+  EXPECT_GT(flipped_faces(ours, noisy, m.faces), kWrinkleShare * static_cast<double>(m.faces.rows()));
 }
 
 // The iterative solve against a direct one of the documented system: with a given noise so large
