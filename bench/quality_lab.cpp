@@ -1344,6 +1344,20 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "V") {  // the denoiser with and without standing up the faces its refinement turned over
+    std::string err;
+    for (bool unturn : {true, false}) {
+      DenoiseOptions d;
+      d.refine_unturn = unturn;
+      Positions out;
+      DenoiseReport rep;
+      if (!feature_preserving_denoise(noisy, f, d, out, rep, err)) { std::printf("%s\n", err.c_str()); return 1; }
+      char label[80];
+      std::snprintf(label, sizeof label, "denoise (u%d, %d stood up)", int(rep.untangled), rep.refine_unturned_faces);
+      show(label, out);
+    }
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "k") {  // normal error near and away from the clean creases
     std::string err;
     Positions nas, den;

@@ -2,6 +2,7 @@
 
 #include "mesh/crease_contrast.h"
 #include "mesh/faces_near_creases.h"
+#include "reconstruction/flip_guard.h"
 
 #include "mesh/mesh_checks.h"
 #include "evaluation/gaussian_noise.h"
@@ -302,6 +303,9 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
       result = rebuilt + (result - rebuilt) * (allowed / moved);
       report.refine_scaled = allowed / moved;
     }
+    // The start has no folds but the noise's own (left out): a face the vertex update turned
+    // over against it is a fold the refinement made (slivers at creases; docs/quality.md item 15).
+    if (options.refine_unturn) report.refine_unturned_faces = unturn_few_turned_faces(rebuilt, faces, 1.0, result);
     clock.done("refinement");
   }
   step(100, "Done");

@@ -20,7 +20,9 @@
 //    5% of the mean edge, one round of fewer passes)
 //    (guided_normal_denoise.h); the filter's range width is kRefineSmoothSigma away from the
 //    creases of the noise-level smoothing (faces_near_creases.h, kCreaseDihedral): at the creases
-//    the narrow width keeps them, elsewhere the surface's own curvature needs the wide one;
+//    the narrow width keeps them, elsewhere the surface's own curvature needs the wide one; a
+//    face the refinement turns over against its start (the input, or the untangling's
+//    smoothing), which noise has not folded, is its own fold: it is stood back up (flip_guard.h);
 //  - surfaces without sharp creases (crease_contrast.h of the smoothed mesh below kCreaseContrast)
 //    get the adaptive smoothing, cross-validated cut-off, as the result instead: the refinement
 //    facets them; not a mesh with exactly flat parts (its noise estimate capped by the flat
@@ -106,6 +108,7 @@ struct DenoiseOptions {
   int refine_normal_passes = 8;       // guided normal filtering passes per round; 0: no refinement
   double refine_normal_sigma = 0.25;  // range width of that filter, on unit normals (~15 degrees)
   double refine_smooth_sigma = kRefineSmoothSigma;  // away from creases; at most refine_normal_sigma: one width everywhere
+  bool refine_unturn = true;  // faces the refinement turns over against its start stood back up (item 15)
   int refine_vertex_iterations = 20;  // vertex update iterations towards the filtered normals
   double refine_drift_step = kRoundDriftStep;        // with rounds set by the noise (experiments)
   double refine_converged_step = kRoundConvergedStep;
@@ -129,6 +132,7 @@ struct DenoiseReport {
   int refine_normal_passes = 0;  // per round, as used
   double refine_scaled = 1;      // < 1: the refinement's move was scaled down to the noise's RMS
   double refine_near_creases = -1;  // share of the faces given the narrow range width (-1: one width for all)
+  int refine_unturned_faces = 0;  // turned over by the refinement against its start, stood back up
   bool features_detected = false;  // report.type and feature_lines hold the input's features
   int feature_vertices = 0;
   int corners = 0;

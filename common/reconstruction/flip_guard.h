@@ -28,6 +28,8 @@ int restore_turned_faces_that_fit(const Positions& input, const Faces& faces, do
 // these and their neighbours, and only if no face around turns over against the input or
 // against the smoothed surface (the sum of its corners' area-weighted normals on `result` as
 // given), unless the input had it so. Returns the faces un-turned (0 when there are too many).
+// With `max_share` 1 every such face is taken: the denoiser's refinement, whose start has no folds
+// but the noise's, stands up all the faces it turned over itself.
 int unturn_few_turned_faces(const Positions& input, const Faces& faces, double max_share, Positions& result);
 
 }  // namespace hht
