@@ -1352,8 +1352,10 @@ int main(int argc, char** argv) {
       Positions out;
       DenoiseReport rep;
       if (!feature_preserving_denoise(noisy, f, d, out, rep, err)) { std::printf("%s\n", err.c_str()); return 1; }
+      double refinement = 0;
+      for (const StageTime& t : rep.stages) if (std::string(t.stage) == "refinement") refinement = t.seconds;
       char label[80];
-      std::snprintf(label, sizeof label, "denoise (u%d, %d stood up)", int(rep.untangled), rep.refine_unturned_faces);
+      std::snprintf(label, sizeof label, "denoise (u%d, %d stood up, refinement %.2f s)", int(rep.untangled), rep.refine_unturned_faces, refinement);
       show(label, out);
     }
     return 0;
