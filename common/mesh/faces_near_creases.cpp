@@ -2,6 +2,7 @@
 
 #include "mesh/vertex_normals.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
