@@ -393,17 +393,12 @@ int main(int argc, char** argv) {
   };
   std::printf("%s n=%d level %.2f\n", argv[1], n, level);
   {
-    Positions vn = Positions::Zero(n, 3);
-    Positions fn = face_normals(clean, f);
-    for (Eigen::Index i = 0; i < f.rows(); ++i)
-      for (int k = 0; k < 3; ++k) {
-        Eigen::Vector3d a = clean.row(f(i, 0)), b = clean.row(f(i, 1)), c = clean.row(f(i, 2));
-        vn.row(f(i, k)) += (b - a).cross(c - a).transpose();
-      }
+    const Positions vn = summed_area_vectors(clean, f);  // unnormalised, as the harness sums them
+    const Positions fn = face_normals(clean, f);
     int folded = 0;
     g_clean_folded.assign(f.rows(), 0);
     for (Eigen::Index i = 0; i < f.rows(); ++i) {
-      Eigen::RowVector3d s = vn.row(f(i, 0)) + vn.row(f(i, 1)) + vn.row(f(i, 2));  // unnormalised, as the harness sums them
+      Eigen::RowVector3d s = vn.row(f(i, 0)) + vn.row(f(i, 1)) + vn.row(f(i, 2));
       g_clean_folded[i] = fn.row(i).dot(s) < 0;
       folded += g_clean_folded[i];
     }

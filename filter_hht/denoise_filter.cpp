@@ -197,8 +197,6 @@ bool apply(FilterRun& run) {
   } else if (report.refine_normal_passes > 0 && o.refine_vertex_iterations > 0) {
     run.log(QString("  refinement: %1 round(s) of %2 guided normal filtering passes and %3 vertex update iterations")
                 .arg(report.refine_rounds).arg(report.refine_normal_passes).arg(o.refine_vertex_iterations));
-    if (report.refine_unturned_faces > 0)
-      run.log(QString("  %1 faces the refinement turned over against its start stood back up").arg(report.refine_unturned_faces));
     if (report.refine_near_creases >= 0)
       run.log(QString("  range width %1 on the %2% of the faces near the smoothed mesh's creases (sharper than %3 degrees), "
                       "%4 elsewhere")
@@ -214,6 +212,8 @@ bool apply(FilterRun& run) {
                            ? QString("; the last drifted (above %1) and was undone").arg(o.refine_drift_step)
                            : QString("; the last did not converge (above %1) and was undone").arg(o.refine_converged_step)));
     }
+    if (report.refine_unturned_faces > 0)
+      run.log(QString("  %1 faces the refinement turned over against its start stood back up").arg(report.refine_unturned_faces));
   } else {
     run.log("  no refinement");
   }

@@ -1,5 +1,7 @@
 #include "evaluation/denoise_metrics.h"
 
+#include "mesh/vertex_normals.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -193,9 +195,7 @@ int flipped_faces(const Positions& result, const Positions& reference, const Fac
     const Eigen::RowVector3d a = p.row(faces(f, 0));
     return Eigen::RowVector3d((p.row(faces(f, 1)) - a).cross(p.row(faces(f, 2)) - a));
   };
-  Positions corner_sums = Positions::Zero(reference.rows(), 3);
-  for (Eigen::Index f = 0; f < faces.rows(); ++f)
-    for (int k = 0; k < 3; ++k) corner_sums.row(faces(f, k)) += area(reference, f);
+  const Positions corner_sums = summed_area_vectors(reference, faces);
   int flipped = 0;
   for (Eigen::Index f = 0; f < faces.rows(); ++f) {
     const Eigen::RowVector3d before = area(reference, f);

@@ -223,7 +223,8 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     clock.done("untangling");
     // A surface without sharp creases (organic): the guided refinement, made for creases, would
     // facet it; the adaptive smoothing with its cross-validated cut-off is the better result.
-    report.crease_contrast = crease_contrast(smoothed, faces);
+    const std::vector<DihedralAngle> angles = dihedral_angles(smoothed, faces);
+    report.crease_contrast = crease_contrast(angles);
     const bool no_creases = report.crease_contrast < kCreaseContrast;
     report.flat_parts_refined = no_creases && options.refine_flat_parts && report.noise.capped() && !report.untangled;
     if (route && no_creases && !report.flat_parts_refined) {
@@ -239,7 +240,7 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
       step(100, "Done");
       return true;
     }
-    near_creases = faces_near_creases(smoothed, faces, kCreaseDihedral);
+    near_creases = faces_near_creases(angles, faces, smoothed.rows(), kCreaseDihedral);
   }
 
   if (options.detect_features && (options.paper_stage || options.show_features) && !detect_features(31)) return false;

@@ -6,12 +6,13 @@
 // CAD part without sharp creases (mech-holes-shark, 5). docs/quality.md has the table.
 #pragma once
 
-#include "mesh/mesh_arrays.h"
+#include "mesh/dihedral_angles.h"
 
 namespace hht {
 
 // The median counts as at least 0.57 degrees (a clean CAD part is mostly exactly flat); 0 when
 // the mesh has no interior edge or every dihedral angle is 0 (a plane).
-double crease_contrast(const Positions& positions, const Faces& faces);
+double crease_contrast(const std::vector<DihedralAngle>& angles);
+double crease_contrast(const Positions& positions, const Faces& faces);  // of dihedral_angles()
 
 }  // namespace hht

@@ -5,14 +5,15 @@
 // needs it (docs/quality.md item 14).
 #pragma once
 
-#include "mesh/mesh_arrays.h"
+#include "mesh/dihedral_angles.h"
 
 #include <vector>
 
 namespace hht {
 
-// One flag per face. Edges of one face (boundary) are no creases; on a non-manifold edge each
-// further face is compared with the first. Faces of zero area have no normal and make none.
-std::vector<unsigned char> faces_near_creases(const Positions& positions, const Faces& faces, double degrees);
+// One flag per face, from the mesh's dihedral_angles(): edges of one face (boundary) are no
+// creases, nor are those of zero-area faces, which have no normal.
+std::vector<unsigned char> faces_near_creases(const std::vector<DihedralAngle>& angles, const Faces& faces,
+                                              Eigen::Index vertex_count, double degrees);
 
 }  // namespace hht

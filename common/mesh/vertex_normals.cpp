@@ -2,13 +2,18 @@
 
 namespace hht {
 
-Positions area_weighted_vertex_normals(const Positions& positions, const Faces& faces) {
-  Positions normals = Positions::Zero(positions.rows(), 3);
+Positions summed_area_vectors(const Positions& positions, const Faces& faces) {
+  Positions sums = Positions::Zero(positions.rows(), 3);
   for (Eigen::Index f = 0; f < faces.rows(); ++f) {
     const Eigen::RowVector3d a = positions.row(faces(f, 0));
     const Eigen::RowVector3d n = (positions.row(faces(f, 1)) - a).cross(positions.row(faces(f, 2)) - a);
-    for (int k = 0; k < 3; ++k) normals.row(faces(f, k)) += n;
+    for (int k = 0; k < 3; ++k) sums.row(faces(f, k)) += n;
   }
+  return sums;
+}
+
+Positions area_weighted_vertex_normals(const Positions& positions, const Faces& faces) {
+  Positions normals = summed_area_vectors(positions, faces);
   for (Eigen::Index i = 0; i < normals.rows(); ++i) {
     const double len = normals.row(i).norm();
     if (len > 0) normals.row(i) /= len;

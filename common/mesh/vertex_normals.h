@@ -8,6 +8,10 @@ namespace hht {
 
 Positions area_weighted_vertex_normals(const Positions& positions, const Faces& faces);
 
+// The same sums, unnormalised (twice the incident area along the normal): what a face is
+// folded against, in the flip guard and in the evaluation's count of faces turned over.
+Positions summed_area_vectors(const Positions& positions, const Faces& faces);
+
 // Per-face unit normals by the winding; zero for zero-area faces.
 Positions unit_face_normals(const Positions& positions, const Faces& faces);
 

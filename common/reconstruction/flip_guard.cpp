@@ -105,11 +105,9 @@ int restore_turned_faces_that_fit(const Positions& input, const Faces& faces, do
 }
 
 int unturn_few_turned_faces(const Positions& input, const Faces& faces, double max_share, Positions& result) {
-  // Each vertex's sum of its faces' area vectors, unnormalised: the folds the harness leaves out
-  // of its count of faces turned over (docs/quality.md), so that those two agree.
-  Positions input_normals = Positions::Zero(input.rows(), 3);
-  for (Eigen::Index f = 0; f < faces.rows(); ++f)
-    for (int k = 0; k < 3; ++k) input_normals.row(faces(f, k)) += area_vector(input, faces, f);
+  // Unnormalised sums: the folds the harness leaves out of its count of faces turned over
+  // (docs/quality.md), so that those two agree.
+  const Positions input_normals = summed_area_vectors(input, faces);
   auto folded_in_input = [&](Eigen::Index f) { return area_vector(input, faces, f).dot(corners(input_normals, faces, f)) < 0; };
   auto turned = [&](Eigen::Index f) { return area_vector(input, faces, f).dot(area_vector(result, faces, f)) < 0; };
   std::vector<int> candidates;

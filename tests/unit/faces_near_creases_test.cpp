@@ -13,7 +13,7 @@ namespace {
 // gentle bends and a plane have none.
 TEST(FacesNearCreases, TheCubesEdgesAndNothingElse) {
   const test::ArrayMesh cube = test::load_data_mesh("cube-meshed");
-  const std::vector<unsigned char> near = faces_near_creases(cube.positions, cube.faces, 30);
+  const std::vector<unsigned char> near = faces_near_creases(dihedral_angles(cube.positions, cube.faces), cube.faces, cube.positions.rows(), 30);
   ASSERT_EQ(near.size(), static_cast<size_t>(cube.faces.rows()));
   const Eigen::RowVector3d low = cube.positions.colwise().minCoeff(), high = cube.positions.colwise().maxCoeff();
   const double tolerance = 1e-6 * (high - low).norm();
@@ -29,7 +29,7 @@ TEST(FacesNearCreases, TheCubesEdgesAndNothingElse) {
   EXPECT_LT(std::count(near.begin(), near.end(), 1), cube.faces.rows());
 
   const test::ArrayMesh sphere = test::sphere(4);
-  const std::vector<unsigned char> none = faces_near_creases(sphere.positions, sphere.faces, 30);
+  const std::vector<unsigned char> none = faces_near_creases(dihedral_angles(sphere.positions, sphere.faces), sphere.faces, sphere.positions.rows(), 30);
   EXPECT_EQ(std::count(none.begin(), none.end(), 1), 0);
   EXPECT_EQ(std::count(none.begin(), none.end(), 0), sphere.faces.rows());
 }
@@ -42,14 +42,14 @@ TEST(FacesNearCreases, TheAngleDecidesAndBoundariesAreNoCreases) {
   p << 0, 0, 0, 0, 1, 0, -1, 0.5, 0, std::cos(a), 0.5, std::sin(a);
   Faces two(2, 3);
   two << 0, 1, 2, 1, 0, 3;
-  EXPECT_EQ(faces_near_creases(p, two, 30), (std::vector<unsigned char>{1, 1}));
-  EXPECT_EQ(faces_near_creases(p, two, 50), (std::vector<unsigned char>{0, 0}));
+  EXPECT_EQ(faces_near_creases(dihedral_angles(p, two), two, 4, 30), (std::vector<unsigned char>{1, 1}));
+  EXPECT_EQ(faces_near_creases(dihedral_angles(p, two), two, 4, 50), (std::vector<unsigned char>{0, 0}));
   Faces one(1, 3);
   one << 0, 1, 2;
-  EXPECT_EQ(faces_near_creases(p, one, 1), (std::vector<unsigned char>{0}));
+  EXPECT_EQ(faces_near_creases(dihedral_angles(p, one), one, 4, 1), (std::vector<unsigned char>{0}));
   Positions flat = p;
   flat.row(3) = flat.row(0);  // the second face has no area
-  EXPECT_EQ(faces_near_creases(flat, two, 1), (std::vector<unsigned char>{0, 0}));
+  EXPECT_EQ(faces_near_creases(dihedral_angles(flat, two), two, 4, 1), (std::vector<unsigned char>{0, 0}));
 }
 
 }  // namespace
