@@ -50,6 +50,11 @@ void declare(const MeshDocument&, RichParameterList& p) {
                      "alone)."));
   p.addParam(RichInt("refineVertexIterations", d.refine_vertex_iterations, "Refinement: vertex update iterations",
                      "Iterations of the vertex update towards the filtered normals (Sun et al. 2007; 0 to 1000)."));
+  p.addParam(RichBool("refineOwnNormalsLast", d.refine_own_normals_last, "Refinement: last round on own normals",
+                      "The refinement's last round filters each face normal with a range kernel on the faces' own "
+                      "normals (bilateral normal filtering, Zheng et al. 2011) instead of the patch guidance: it keeps "
+                      "small features and creases the patches blur (measured on CAD parts at 2-30% noise, "
+                      "docs/quality.md item 16). Off: every round guided."));
   p.addParam(RichBool("detectFeatures", d.detect_features, "Preserve sharp features",
                       "Detect sharp features and process them as their own signals (CAD-like models) in the paper's "
                       "stage; they are detected only for that stage or to show them. Off: no feature separation, for "
@@ -138,6 +143,7 @@ bool apply(FilterRun& run) {
   o.reconstruction.lambda = par.getFloat("lambda");
   o.refine_normal_passes = par.getInt("refineNormalPasses");
   o.refine_vertex_iterations = par.getInt("refineVertexIterations");
+  o.refine_own_normals_last = par.getBool("refineOwnNormalsLast");
   if (!check_range("the feature angle", o.features.angle_degrees, 0, 180, run.error, " degrees") ||
       !check_range("normalFilterIterations", o.features.filter_iterations, 0, kMaxPasses, run.error) ||
       !check_range("the cut-off", o.cutoff, 0, 0.5, run.error, " cycles per sample") ||
@@ -195,11 +201,17 @@ bool apply(FilterRun& run) {
   if (report.smoothed_instead) {
     run.log("  no refinement (the surface has no sharp creases)");
   } else if (report.refine_normal_passes > 0 && o.refine_vertex_iterations > 0) {
-    run.log(QString("  refinement: %1 round(s) of %2 guided normal filtering passes and %3 vertex update iterations")
-                .arg(report.refine_rounds).arg(report.refine_normal_passes).arg(o.refine_vertex_iterations));
-    if (report.refine_near_creases >= 0)
-      run.log(QString("  range width %1 on the %2% of the faces near the smoothed mesh's creases (sharper than %3 degrees), "
-                      "%4 elsewhere")
+    const int guided_rounds = report.refine_rounds - report.refine_own_normal_rounds;
+    run.log(QString("  refinement: %1 round(s) of %2 normal filtering passes and %3 vertex update iterations%4")
+                .arg(report.refine_rounds).arg(report.refine_normal_passes).arg(o.refine_vertex_iterations)
+                .arg(guided_rounds == report.refine_rounds ? QString("; all guided")
+                     : QString("; %1 on the faces' own normals (bilateral normal filtering, range width %2)")
+                           .arg(guided_rounds == 0 ? QString("all") : QString("the first %1 guided, the last %2")
+                                                                            .arg(guided_rounds).arg(report.refine_own_normal_rounds))
+                           .arg(hht::kOwnNormalSigma)));
+    if (report.refine_near_creases >= 0 && guided_rounds > 0)
+      run.log(QString("  guided rounds: range width %1 on the %2% of the faces near the smoothed mesh's creases (sharper "
+                      "than %3 degrees), %4 elsewhere")
                   .arg(o.refine_normal_sigma).arg(100 * report.refine_near_creases, 0, 'f', 1).arg(hht::kCreaseDihedral)
                   .arg(o.refine_smooth_sigma));
     if (!report.refine_steps.empty()) {

@@ -280,9 +280,14 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     const int asked = report.refine_rounds_asked;
     const int max_rounds =
         rounds_by_noise ? std::max(asked, static_cast<int>(std::lround(options.refine_extra_rounds_factor * asked))) : asked;
+    GuidedNormalDenoiseOptions own = refine;  // the last rounds: bilateral normal filtering, one width
+    own.guidance = NormalGuidance::OwnNormal;
+    own.sigma = kOwnNormalSigma;
+    own.face_sigma.clear();
     for (int round = 0; round < max_rounds; ++round) {
+      const bool own_normals = options.refine_own_normals_last && round >= asked - 1;
       Positions next;
-      if (!guided_normal_denoise(result, faces, refine, next, error, [&](double done) {
+      if (!guided_normal_denoise(result, faces, own_normals ? own : refine, next, error, [&](double done) {
             step(from + static_cast<int>((99 - from) * (round + done) / max_rounds),
                  "Refinement: guided normal filtering and vertex update");
           }))
@@ -295,6 +300,7 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
       }
       result.swap(next);
       ++report.refine_rounds;
+      report.refine_own_normal_rounds += own_normals;
     }
     // Discrepancy bound: the refinement removes noise, so it may move vertices by about the
     // noise's RMS and no more; more is the guided filter faceting curved parts of the surface.

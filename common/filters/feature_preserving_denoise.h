@@ -23,6 +23,10 @@
 //    the narrow width keeps them, elsewhere the surface's own curvature needs the wide one; a
 //    face the refinement turns over against its start (the input, or the untangling's
 //    smoothing), which noise has not folded, is its own fold: it is stood back up (flip_guard.h);
+//    the last round the noise asks for (and any after it) is bilateral normal filtering instead
+//    (Zheng et al. 2011: the range kernel on each face's own normal, kOwnNormalSigma wide): once
+//    the patch guidance has taken heavy noise down, or at light noise from the start, it keeps
+//    small features and creases that the patches blur (docs/quality.md item 16);
 //  - surfaces without sharp creases (crease_contrast.h of the smoothed mesh below kCreaseContrast)
 //    get the adaptive smoothing, cross-validated cut-off, as the result instead: the refinement
 //    facets them; not a mesh with exactly flat parts (its noise estimate capped by the flat
@@ -34,6 +38,7 @@
 
 #include "cycle/feature_lines.h"
 #include "mesh/sharp_features.h"
+#include "filters/guided_normal_denoise.h"
 #include "filters/noise_adaptive_smoothing.h"
 #include "filters/spectral_mesh_filter.h"
 
@@ -71,6 +76,10 @@ constexpr double kCreaseContrast = 9.0;
 // width there (refine_normal_sigma) left turbine's curved blades faceted.
 constexpr double kRefineSmoothSigma = 0.45;
 constexpr double kCreaseDihedral = 30.0;
+
+// The range width of the refinement's last round, on each face's own unit normal (bilateral
+// normal filtering's authors' default; 0.3 and 0.45 measured worse: docs/quality.md item 16).
+constexpr double kOwnNormalSigma = 0.35;
 
 // The untangling's smoothing (and the crease contrast measured on it) keeps the second-order
 // filter at the noise law's scale that the refinement, kTangledShare and kCreaseContrast were
@@ -110,6 +119,7 @@ struct DenoiseOptions {
   double refine_smooth_sigma = kRefineSmoothSigma;  // away from creases; at most refine_normal_sigma: one width everywhere
   bool refine_unturn = true;  // faces the refinement turns over against its start stood back up (item 15)
   int refine_vertex_iterations = 20;  // vertex update iterations towards the filtered normals
+  bool refine_own_normals_last = true;  // the last round(s) on the faces' own normals (item 16)
   double refine_drift_step = kRoundDriftStep;        // with rounds set by the noise (experiments)
   double refine_converged_step = kRoundConvergedStep;
   double refine_extra_rounds_factor = kExtraRoundsFactor;
@@ -133,6 +143,7 @@ struct DenoiseReport {
   double refine_scaled = 1;      // < 1: the refinement's move was scaled down to the noise's RMS
   double refine_near_creases = -1;  // share of the faces given the narrow range width (-1: one width for all)
   int refine_unturned_faces = 0;  // turned over by the refinement against its start, stood back up
+  int refine_own_normal_rounds = 0;  // rounds done with the range kernel on the faces' own normals
   bool features_detected = false;  // report.type and feature_lines hold the input's features
   int feature_vertices = 0;
   int corners = 0;

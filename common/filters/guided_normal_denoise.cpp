@@ -16,7 +16,12 @@ bool guided_normal_denoise(const Positions& positions, const Faces& faces, const
   result = positions;
   for (int round = 0; round < options.rounds; ++round) {
     Positions normals;
-    if (!guided_face_normals(result, faces, options.normal_passes, options.sigma, normals, error, options.face_sigma)) return false;
+    const bool filtered = options.guidance == NormalGuidance::OwnNormal
+                              ? bilateral_face_normals(result, faces, options.normal_passes, options.sigma, normals, error,
+                                                       options.face_sigma)
+                              : guided_face_normals(result, faces, options.normal_passes, options.sigma, normals, error,
+                                                    options.face_sigma);
+    if (!filtered) return false;
     if (progress) progress((round + 0.8) / options.rounds);
     result = fit_vertices_to_normals(result, faces, normals, options.vertex_iterations);
     if (progress) progress((round + 1.0) / options.rounds);

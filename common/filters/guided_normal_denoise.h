@@ -5,7 +5,9 @@
 // vertices are fitted to the filtered normals (Sun et al. 2007, normal_vertex_update.h); the
 // two steps are repeated `rounds` times, each round filtering the normals of the last result.
 // No HHT: the strongest of the field's denoisers that this project has, the baseline the HHT
-// denoiser is measured against, and the refinement stage of that denoiser.
+// denoiser is measured against, and the refinement stage of that denoiser. With
+// NormalGuidance::OwnNormal it is bilateral normal filtering (Zheng et al. 2011), the other
+// classic of the field (its authors' defaults: 20 passes, 10 vertex iterations, one round).
 #pragma once
 
 #include <functional>
@@ -17,12 +19,17 @@
 
 namespace hht {
 
+// What the range kernel compares: the guidance normals of the most consistent patch (Zhang et
+// al. 2015), or each face's own filtered normal (bilateral normal filtering, Zheng et al. 2011).
+enum class NormalGuidance { ConsistentPatch, OwnNormal };
+
 struct GuidedNormalDenoiseOptions {
   int rounds = 1;              // normal filtering + vertex update, repeated
   int normal_passes = 8;       // guided normal filtering passes per round
   double sigma = 0.35;         // range width on unit guidance normals (~20 degrees)
   int vertex_iterations = 20;  // vertex update iterations per round
   std::vector<double> face_sigma;  // each face's own range width instead of `sigma` (empty: none)
+  NormalGuidance guidance = NormalGuidance::ConsistentPatch;
 };
 
 // Fails like guided_face_normals on broken input (no faces, non-manifold, non-finite).

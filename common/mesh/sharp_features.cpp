@@ -176,8 +176,10 @@ Positions guidance(const Topology& topo, const FaceGeometry& g, const Positions&
 // Guided normal filtering: each pass, a joint bilateral filter over the faces sharing a vertex
 // with each face, weighted by area, centroid distance and the difference of the guidance
 // normals, so faces on the two sides of a crease barely mix.
+// With own_normals the range kernel compares the filtered normals themselves over the faces
+// around, the face left out: bilateral normal filtering (Zheng et al. 2011, local scheme).
 Positions filter_normals(const Topology& topo, const FaceGeometry& g, int iterations, double sigma_r,
-                         const std::vector<double>& face_sigma_r = {}) {
+                         const std::vector<double>& face_sigma_r = {}, bool own_normals = false) {
   const int nf = static_cast<int>(topo.faces.rows());
   double spacing = 0;
   int interior = 0;
@@ -209,13 +211,14 @@ Positions filter_normals(const Topology& topo, const FaceGeometry& g, int iterat
 
   Positions n = g.normals, next(nf, 3);
   for (int it = 0; it < iterations; ++it) {
-    const Positions guide = guidance(topo, g, n);
+    const Positions guide = own_normals ? n : guidance(topo, g, n);
     parallel_for(0, nf, [&](int first, int last) {
       for (int f = first; f < last; ++f) {
         const double inv_rf = face_inv_r.empty() ? inv_r : face_inv_r[f];
         Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
         for (int i = topo.face_faces.begin(f); i < topo.face_faces.end(f); ++i) {
           const int j = topo.face_faces.items[i];
+          if (own_normals && j == f) continue;
           const float range = static_cast<float>((guide.row(f) - guide.row(j)).squaredNorm() * inv_rf);
           sum += (spatial[i] * std::exp(-range)) * n.row(j);
         }
@@ -441,9 +444,9 @@ bool detect_sharp_features(const Positions& positions, const Faces& faces, const
   return true;
 }
 
-bool guided_face_normals(const Positions& positions, const Faces& faces, int iterations, double sigma,
-                         Positions& normals, std::string& error, const std::vector<double>& face_sigma) {
-  if (!face_sigma.empty() && static_cast<Eigen::Index>(face_sigma.size()) != faces.rows()) {
+// Empty, or one positive width per face.
+static bool check_face_widths(const std::vector<double>& face_sigma, Eigen::Index faces, std::string& error) {
+  if (!face_sigma.empty() && static_cast<Eigen::Index>(face_sigma.size()) != faces) {
     error = "one range width per face expected";
     return false;
   }
@@ -452,9 +455,24 @@ bool guided_face_normals(const Positions& positions, const Faces& faces, int ite
       error = "range widths must be positive";
       return false;
     }
+  return true;
+}
+
+bool guided_face_normals(const Positions& positions, const Faces& faces, int iterations, double sigma,
+                         Positions& normals, std::string& error, const std::vector<double>& face_sigma) {
+  if (!check_face_widths(face_sigma, faces.rows(), error)) return false;
   Topology topo;
   if (!build_topology(faces, static_cast<int>(positions.rows()), topo, error)) return false;
   normals = filter_normals(topo, face_geometry(positions, faces), iterations, sigma, face_sigma);
+  return true;
+}
+
+bool bilateral_face_normals(const Positions& positions, const Faces& faces, int iterations, double sigma,
+                            Positions& normals, std::string& error, const std::vector<double>& face_sigma) {
+  if (!check_face_widths(face_sigma, faces.rows(), error)) return false;
+  Topology topo;
+  if (!build_topology(faces, static_cast<int>(positions.rows()), topo, error)) return false;
+  normals = filter_normals(topo, face_geometry(positions, faces), iterations, sigma, face_sigma, true);
   return true;
 }
 

@@ -74,4 +74,11 @@ bool detect_sharp_features(const Positions& positions, const Faces& faces, const
 bool guided_face_normals(const Positions& positions, const Faces& faces, int iterations, double sigma,
                          Positions& normals, std::string& error, const std::vector<double>& face_sigma = {});
 
+// Bilateral normal filtering (Zheng, Fu, Au and Tai, "Bilateral normal filtering for mesh
+// denoising", TVCG 2011; the local scheme): the same passes and kernels, with the range kernel
+// on the filtered normals themselves, over the faces sharing a vertex with the face, the face
+// itself left out (as in the authors' code); face_sigma as there. Fails like guided_face_normals.
+bool bilateral_face_normals(const Positions& positions, const Faces& faces, int iterations, double sigma,
+                            Positions& normals, std::string& error, const std::vector<double>& face_sigma = {});
+
 }  // namespace hht

@@ -423,6 +423,7 @@ TEST(MeshlabserverParameters, DenoiseOptions) {
          o.emd.max_imfs = 3;
          o.refine_normal_passes = 0;
        }},
+      {"guided_rounds_only", {{"refineOwnNormalsLast", "false"}}, [](DenoiseOptions& o) { o.refine_own_normals_last = false; }},
       {"default", {}, [](DenoiseOptions&) {}},
   };
   for (const Case& c : cases) {
@@ -443,6 +444,14 @@ TEST(MeshlabserverParameters, DenoiseOptions) {
         selected += saved.vert[v].IsS();
       }
       EXPECT_EQ(selected, report.feature_vertices);
+    }
+    if (c.tag == "guided_rounds_only") {  // the guided rounds' range widths, narrow at the creases
+      EXPECT_EQ(report.refine_own_normal_rounds, 0);
+      EXPECT_NE(run.log.find("; all guided"), std::string::npos) << run.log;
+      EXPECT_NE(run.log.find("guided rounds: range width 0.25 on the"), std::string::npos) << run.log;
+      EXPECT_NE(run.log.find("0.45 elsewhere"), std::string::npos) << run.log;
+    } else if (!o.paper_stage) {
+      EXPECT_EQ(report.refine_own_normal_rounds, report.refine_rounds);
     }
     if (o.paper_stage && o.detect_features) {  // the log reports the library's detection and line processing
       EXPECT_NE(run.log.find("features: " + std::to_string(report.feature_vertices) + " vertices"), std::string::npos) << run.log;
@@ -580,6 +589,25 @@ TEST(MeshlabserverParameters, GuidedDenoiseRoundsPassesSigmaIterations) {
       n.path, "guided_denoise.mlx", {{"rounds", "2"}, {"normalPasses", "3"}, {"sigma", "0.5"}, {"vertexIterations", "7"}},
       "guided");
   expect_positions(saved_positions(run), expected, n.in.diagonal, "guided");
+}
+
+// bilateral_normal_denoise.mlx is the guided filter with the range kernel on each face's own
+// normal and its authors' defaults; the guided filter's result is another.
+TEST(MeshlabserverParameters, BilateralNormalDenoiseScript) {
+  const NoisyInput n = noisy_fandisk("bilateral_normal_input");
+  GuidedNormalDenoiseOptions o;
+  o.guidance = NormalGuidance::OwnNormal;
+  o.normal_passes = 20;
+  o.vertex_iterations = 10;
+  Positions expected, guided;
+  std::string error;
+  ASSERT_TRUE(guided_normal_denoise(n.noisy, n.in.faces, o, expected, error)) << error;
+  o.guidance = NormalGuidance::ConsistentPatch;
+  ASSERT_TRUE(guided_normal_denoise(n.noisy, n.in.faces, o, guided, error)) << error;
+  EXPECT_GT((expected - guided).rowwise().norm().maxCoeff(), 1e-4 * n.in.diagonal);
+  const ServerRun run = run_resource(n.path, "bilateral_normal_denoise.mlx", {}, "bilateral_normal");
+  EXPECT_NE(run.log.find("Bilateral normal filtering denoise: 1 round(s) of 20 passes"), std::string::npos) << run.log;
+  expect_positions(saved_positions(run), expected, n.in.diagonal, "bilateral_normal");
 }
 
 TEST(MeshlabserverParameters, NonLocalMeansEtasAndIterations) {
