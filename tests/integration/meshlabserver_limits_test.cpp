@@ -118,7 +118,7 @@ TEST_P(ExtremeScale, ScaledMeshGivesTheScaledResult) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scripts, ExtremeScale,
-                         ::testing::Values("denoise.mlx", "smooth.mlx", "enhance.mlx", "guided_denoise.mlx",
+                         ::testing::Values("denoise.mlx", "smooth.mlx", "enhance.mlx", "guided_denoise.mlx", "bilateral_normal_denoise.mlx",
                                            "bilateral.mlx", "nonlocal_means.mlx", "surface_emd_smooth.mlx"),
                          [](const ::testing::TestParamInfo<std::string>& info) {
                            return info.param.substr(0, info.param.find('.'));

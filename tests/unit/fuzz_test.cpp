@@ -270,6 +270,15 @@ std::vector<Case> entry_points() {
          const bool ok = guided_normal_denoise(p, f, {}, out, e);
          return refused_or(ok, e, {out});
        }},
+      {"BilateralNormalDenoise", false,
+       [](const Positions& p, const Faces& f) {
+         GuidedNormalDenoiseOptions o;
+         o.guidance = NormalGuidance::OwnNormal;
+         Positions out;
+         std::string e;
+         const bool ok = guided_normal_denoise(p, f, o, out, e);
+         return refused_or(ok, e, {out});
+       }},
       {"SharpFeatures", false,
        [](const Positions& p, const Faces& f) {
          std::vector<FeatureType> type;
