@@ -1247,7 +1247,7 @@ int main(int argc, char** argv) {
     if (const char* x = std::getenv("LAB_RSIGMA")) o.refine_normal_sigma = std::atof(x);
     if (const char* x = std::getenv("LAB_RPASSES")) o.refine_normal_passes = std::atoi(x);
     if (const char* x = std::getenv("LAB_RITER")) o.refine_vertex_iterations = std::atoi(x);
-    if (std::getenv("LAB_NOOWN")) o.refine_own_normals_last = false;
+    if (std::getenv("LAB_NOOWN")) o.refine_own_normals = false;
     if (const char* x = std::getenv("LAB_ROUNDS")) o.refine_rounds = std::atoi(x);
     if (std::getenv("LAB_NOUNTANGLE")) o.untangle = false;
     if (const char* x = std::getenv("LAB_DRIFTSTEP")) o.refine_drift_step = std::atof(x);

@@ -50,11 +50,11 @@ void declare(const MeshDocument&, RichParameterList& p) {
                      "alone)."));
   p.addParam(RichInt("refineVertexIterations", d.refine_vertex_iterations, "Refinement: vertex update iterations",
                      "Iterations of the vertex update towards the filtered normals (Sun et al. 2007; 0 to 1000)."));
-  p.addParam(RichBool("refineOwnNormalsLast", d.refine_own_normals_last, "Refinement: last round on own normals",
-                      "The refinement's last round filters each face normal with a range kernel on the faces' own "
-                      "normals (bilateral normal filtering, Zheng et al. 2011) instead of the patch guidance: it keeps "
-                      "small features and creases the patches blur (measured on CAD parts at 2-30% noise, "
-                      "docs/quality.md item 16). Off: every round guided."));
+  p.addParam(RichBool("refineOwnNormals", d.refine_own_normals, "Refinement: last round on own normals",
+                      "The refinement's last round (every round when it starts from the untangling's smoothing) filters "
+                      "each face normal with a range kernel on the faces' own normals (bilateral normal filtering, Zheng "
+                      "et al. 2011) instead of the patch guidance: it keeps small features and creases the patches blur "
+                      "(measured on CAD parts at 2-30% noise, docs/quality.md item 16). Off: every round guided."));
   p.addParam(RichBool("detectFeatures", d.detect_features, "Preserve sharp features",
                       "Detect sharp features and process them as their own signals (CAD-like models) in the paper's "
                       "stage; they are detected only for that stage or to show them. Off: no feature separation, for "
@@ -143,7 +143,7 @@ bool apply(FilterRun& run) {
   o.reconstruction.lambda = par.getFloat("lambda");
   o.refine_normal_passes = par.getInt("refineNormalPasses");
   o.refine_vertex_iterations = par.getInt("refineVertexIterations");
-  o.refine_own_normals_last = par.getBool("refineOwnNormalsLast");
+  o.refine_own_normals = par.getBool("refineOwnNormals");
   if (!check_range("the feature angle", o.features.angle_degrees, 0, 180, run.error, " degrees") ||
       !check_range("normalFilterIterations", o.features.filter_iterations, 0, kMaxPasses, run.error) ||
       !check_range("the cut-off", o.cutoff, 0, 0.5, run.error, " cycles per sample") ||

@@ -285,7 +285,7 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     own.sigma = kOwnNormalSigma;
     own.face_sigma.clear();
     for (int round = 0; round < max_rounds; ++round) {
-      const bool own_normals = options.refine_own_normals_last && round >= asked - 1;
+      const bool own_normals = options.refine_own_normals && (round >= asked - 1 || report.untangled);
       Positions next;
       if (!guided_normal_denoise(result, faces, own_normals ? own : refine, next, error, [&](double done) {
             step(from + static_cast<int>((99 - from) * (round + done) / max_rounds),

@@ -26,7 +26,8 @@
 //    the last round the noise asks for (and any after it) is bilateral normal filtering instead
 //    (Zheng et al. 2011: the range kernel on each face's own normal, kOwnNormalSigma wide): once
 //    the patch guidance has taken heavy noise down, or at light noise from the start, it keeps
-//    small features and creases that the patches blur (docs/quality.md item 16);
+//    small features and creases that the patches blur; from the untangling's smoothing, which
+//    has little noise left, every round is (docs/quality.md item 16);
 //  - surfaces without sharp creases (crease_contrast.h of the smoothed mesh below kCreaseContrast)
 //    get the adaptive smoothing, cross-validated cut-off, as the result instead: the refinement
 //    facets them; not a mesh with exactly flat parts (its noise estimate capped by the flat
@@ -119,7 +120,7 @@ struct DenoiseOptions {
   double refine_smooth_sigma = kRefineSmoothSigma;  // away from creases; at most refine_normal_sigma: one width everywhere
   bool refine_unturn = true;  // faces the refinement turns over against its start stood back up (item 15)
   int refine_vertex_iterations = 20;  // vertex update iterations towards the filtered normals
-  bool refine_own_normals_last = true;  // the last round(s) on the faces' own normals (item 16)
+  bool refine_own_normals = true;  // the last round(s), every round when untangled, on the faces' own normals (item 16)
   double refine_drift_step = kRoundDriftStep;        // with rounds set by the noise (experiments)
   double refine_converged_step = kRoundConvergedStep;
   double refine_extra_rounds_factor = kExtraRoundsFactor;

@@ -423,7 +423,7 @@ TEST(MeshlabserverParameters, DenoiseOptions) {
          o.emd.max_imfs = 3;
          o.refine_normal_passes = 0;
        }},
-      {"guided_rounds_only", {{"refineOwnNormalsLast", "false"}}, [](DenoiseOptions& o) { o.refine_own_normals_last = false; }},
+      {"guided_rounds_only", {{"refineOwnNormals", "false"}}, [](DenoiseOptions& o) { o.refine_own_normals = false; }},
       {"default", {}, [](DenoiseOptions&) {}},
   };
   for (const Case& c : cases) {
