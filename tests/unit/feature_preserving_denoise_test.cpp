@@ -24,6 +24,13 @@ Positions denoise(const Positions& p, const Faces& f, const DenoiseOptions& o, D
   return result;
 }
 
+// The refinement with every round guided: none on the faces' own normals (item 16).
+DenoiseOptions every_round_guided() {
+  DenoiseOptions o;
+  o.refine_own_normals = false;
+  return o;
+}
+
 TEST(FeaturePreservingDenoise, NoisyCubeGetsCloserToTheCube) {
   const test::ArrayMesh cube = test::load_data_mesh("cube-meshed");
   const Positions noisy = add_gaussian_noise(cube.positions, cube.faces, 10.0, NoiseDirection::Random, 12);
@@ -140,8 +147,7 @@ TEST(FeaturePreservingDenoise, RoundsSetByTheNoiseBeatGuidedFilteringAlone) {
 TEST(FeaturePreservingDenoise, WideRangeAwayFromCreases) {
   const test::ArrayMesh turbine = test::load_data_mesh("turbine");
   const Positions noisy = add_gaussian_noise(turbine.positions, turbine.faces, 20, NoiseDirection::Normal, 11);
-  DenoiseOptions guided;
-  guided.refine_own_normals = false;
+  const DenoiseOptions guided = every_round_guided();
   DenoiseOptions one_width = guided;
   one_width.refine_smooth_sigma = 0;
   DenoiseReport report;
@@ -185,8 +191,7 @@ TEST(FeaturePreservingDenoise, LastRoundOnTheFacesOwnNormals) {
   for (const char* name : {"cube-meshed", "turbine"}) {
     const test::ArrayMesh m = test::load_data_mesh(name);
     const Positions noisy = add_gaussian_noise(m.positions, m.faces, 5, NoiseDirection::Normal, 11);
-    DenoiseOptions guided;
-    guided.refine_own_normals = false;
+    const DenoiseOptions guided = every_round_guided();
     DenoiseReport report, guided_report;
     const double ours = mean_face_normal_error_degrees(denoise(noisy, m.faces, {}, &report), m.positions, m.faces);
     const double all_guided = mean_face_normal_error_degrees(denoise(noisy, m.faces, guided, &guided_report), m.positions, m.faces);
@@ -209,8 +214,7 @@ TEST(FeaturePreservingDenoise, LastRoundOnTheFacesOwnNormals) {
 TEST(FeaturePreservingDenoise, EveryRoundOnOwnNormalsFromTheUntangledStart) {
   const test::ArrayMesh m = test::load_data_mesh("anchor_dense");
   const Positions noisy = add_gaussian_noise(m.positions, m.faces, 20, NoiseDirection::Normal, 11);
-  DenoiseOptions guided;
-  guided.refine_own_normals = false;
+  const DenoiseOptions guided = every_round_guided();
   DenoiseReport report;
   const double ours = mean_face_normal_error_degrees(denoise(noisy, m.faces, {}, &report), m.positions, m.faces);
   const double all_guided = mean_face_normal_error_degrees(denoise(noisy, m.faces, guided), m.positions, m.faces);
@@ -225,8 +229,7 @@ TEST(FeaturePreservingDenoise, EveryRoundOnOwnNormalsFromTheUntangledStart) {
 TEST(FeaturePreservingDenoise, RefinementStopsAtARoundThatDrifts) {
   const test::ArrayMesh m = test::load_data_mesh("turbine");
   const Positions noisy = add_gaussian_noise(m.positions, m.faces, 20, NoiseDirection::Normal, 11);
-  DenoiseOptions guided;
-  guided.refine_own_normals = false;
+  const DenoiseOptions guided = every_round_guided();
   DenoiseReport report;
   const double ruled = mean_face_normal_error_degrees(denoise(noisy, m.faces, guided, &report), m.positions, m.faces);
   ASSERT_FALSE(report.smoothed_instead);
