@@ -201,14 +201,14 @@ bool apply(FilterRun& run) {
   if (report.smoothed_instead) {
     run.log("  no refinement (the surface has no sharp creases)");
   } else if (report.refine_normal_passes > 0 && o.refine_vertex_iterations > 0) {
-    const int guided_rounds = report.refine_rounds - report.refine_own_normal_rounds;
-    run.log(QString("  refinement: %1 round(s) of %2 normal filtering passes and %3 vertex update iterations%4")
-                .arg(report.refine_rounds).arg(report.refine_normal_passes).arg(o.refine_vertex_iterations)
-                .arg(guided_rounds == report.refine_rounds ? QString("; all guided")
-                     : QString("; %1 on the faces' own normals (bilateral normal filtering, range width %2)")
-                           .arg(guided_rounds == 0 ? QString("all") : QString("the first %1 guided, the last %2")
-                                                                            .arg(guided_rounds).arg(report.refine_own_normal_rounds))
-                           .arg(hht::kOwnNormalSigma)));
+    const int own_rounds = report.refine_own_normal_rounds, guided_rounds = report.refine_rounds - own_rounds;
+    const QString which = guided_rounds == 0 ? QString("all")
+                                             : QString("the first %1 guided, the last %2").arg(guided_rounds).arg(own_rounds);
+    const QString rounds = own_rounds == 0 ? QString("all guided")
+                                           : QString("%1 on the faces' own normals (bilateral normal filtering, range width %2)")
+                                                 .arg(which).arg(hht::kOwnNormalSigma);
+    run.log(QString("  refinement: %1 round(s) of %2 normal filtering passes and %3 vertex update iterations; %4")
+                .arg(report.refine_rounds).arg(report.refine_normal_passes).arg(o.refine_vertex_iterations).arg(rounds));
     if (report.refine_near_creases >= 0 && guided_rounds > 0)
       run.log(QString("  guided rounds: range width %1 on the %2% of the faces near the smoothed mesh's creases (sharper "
                       "than %3 degrees), %4 elsewhere")

@@ -280,10 +280,11 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     const int asked = report.refine_rounds_asked;
     const int max_rounds =
         rounds_by_noise ? std::max(asked, static_cast<int>(std::lround(options.refine_extra_rounds_factor * asked))) : asked;
-    GuidedNormalDenoiseOptions own = refine;  // the last rounds: bilateral normal filtering, one width
-    own.guidance = NormalGuidance::OwnNormal;
+    GuidedNormalDenoiseOptions own;  // the last rounds: bilateral normal filtering, one width
+    own.normal_passes = refine.normal_passes;
+    own.vertex_iterations = refine.vertex_iterations;
     own.sigma = kOwnNormalSigma;
-    own.face_sigma.clear();
+    own.guidance = NormalGuidance::OwnNormal;
     for (int round = 0; round < max_rounds; ++round) {
       const bool own_normals = options.refine_own_normals && (round >= asked - 1 || report.untangled);
       Positions next;

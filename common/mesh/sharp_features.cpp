@@ -211,7 +211,8 @@ Positions filter_normals(const Topology& topo, const FaceGeometry& g, int iterat
 
   Positions n = g.normals, next(nf, 3);
   for (int it = 0; it < iterations; ++it) {
-    const Positions guide = own_normals ? n : guidance(topo, g, n);
+    const Positions patch_guide = own_normals ? Positions() : guidance(topo, g, n);
+    const Positions& guide = own_normals ? n : patch_guide;
     parallel_for(0, nf, [&](int first, int last) {
       for (int f = first; f < last; ++f) {
         const double inv_rf = face_inv_r.empty() ? inv_r : face_inv_r[f];
@@ -444,9 +445,11 @@ bool detect_sharp_features(const Positions& positions, const Faces& faces, const
   return true;
 }
 
-// Empty, or one positive width per face.
-static bool check_face_widths(const std::vector<double>& face_sigma, Eigen::Index faces, std::string& error) {
-  if (!face_sigma.empty() && static_cast<Eigen::Index>(face_sigma.size()) != faces) {
+// filter_normals on a checked mesh and per-face widths (empty, or one positive width per face).
+static bool filtered_face_normals(const Positions& positions, const Faces& faces, int iterations, double sigma,
+                                  const std::vector<double>& face_sigma, bool own_normals, Positions& normals,
+                                  std::string& error) {
+  if (!face_sigma.empty() && static_cast<Eigen::Index>(face_sigma.size()) != faces.rows()) {
     error = "one range width per face expected";
     return false;
   }
@@ -455,25 +458,20 @@ static bool check_face_widths(const std::vector<double>& face_sigma, Eigen::Inde
       error = "range widths must be positive";
       return false;
     }
+  Topology topo;
+  if (!build_topology(faces, static_cast<int>(positions.rows()), topo, error)) return false;
+  normals = filter_normals(topo, face_geometry(positions, faces), iterations, sigma, face_sigma, own_normals);
   return true;
 }
 
 bool guided_face_normals(const Positions& positions, const Faces& faces, int iterations, double sigma,
                          Positions& normals, std::string& error, const std::vector<double>& face_sigma) {
-  if (!check_face_widths(face_sigma, faces.rows(), error)) return false;
-  Topology topo;
-  if (!build_topology(faces, static_cast<int>(positions.rows()), topo, error)) return false;
-  normals = filter_normals(topo, face_geometry(positions, faces), iterations, sigma, face_sigma);
-  return true;
+  return filtered_face_normals(positions, faces, iterations, sigma, face_sigma, false, normals, error);
 }
 
 bool bilateral_face_normals(const Positions& positions, const Faces& faces, int iterations, double sigma,
                             Positions& normals, std::string& error, const std::vector<double>& face_sigma) {
-  if (!check_face_widths(face_sigma, faces.rows(), error)) return false;
-  Topology topo;
-  if (!build_topology(faces, static_cast<int>(positions.rows()), topo, error)) return false;
-  normals = filter_normals(topo, face_geometry(positions, faces), iterations, sigma, face_sigma, true);
-  return true;
+  return filtered_face_normals(positions, faces, iterations, sigma, face_sigma, true, normals, error);
 }
 
 }  // namespace hht
