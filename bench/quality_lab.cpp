@@ -846,6 +846,25 @@ int main(int argc, char** argv) {
       oracle[p] = bo;
       gcv[p] = bg;
     }
+    if (std::getenv("LAB_PATCHDUMP")) {  // per patch: the oracle's strength and the base smoothing's height energies
+      const VertexAdjacency va = vertex_adjacency(f, n);
+      const Eigen::VectorXd hb = one_ring_heights(xs[4], f, va), hn = one_ring_heights(v, f, va);
+      std::vector<double> e1(patches, 0), e2(patches, 0), e3(patches, 0);
+      std::vector<int> cnt(patches, 0);
+      for (int i = 0; i < n; ++i) {
+        double m = 0;
+        for (int j : adj[i]) m += hb[j];
+        m /= std::max<size_t>(1, adj[i].size());
+        e1[patch[i]] += hb[i] * hb[i];
+        e2[patch[i]] += (hb[i] - m) * (hb[i] - m);
+        e3[patch[i]] += hn[i] * hn[i];
+        ++cnt[patch[i]];
+      }
+      const double sg = estimated_sigma(noisy, f);
+      for (int q = 0; q < patches; ++q)
+        std::printf("PATCH %d %.3f %.3f %.6f %.6f %.6f %.4f\n", q, strengths[oracle[q]], ea[q][oracle[q]] / std::max(1, nf[q]) - ea[q][4] / std::max(1, nf[q]),
+                    e1[q] / cnt[q], e2[q] / cnt[q], e3[q] / cnt[q], sg);
+    }
     int global_gcv = 0;
     for (int s_ = 0; s_ < S; ++s_) {
       const double kept = 1 - ttot[s_] / ktot[s_];
@@ -1255,6 +1274,7 @@ int main(int argc, char** argv) {
     if (const char* x = std::getenv("LAB_CONVERGEDSTEP")) o.refine_converged_step = std::atof(x);
     if (std::getenv("LAB_NOROUTE")) o.smooth_surfaces_by_smoothing = false;
     if (std::getenv("LAB_NOFLAT")) o.refine_flat_parts = false;
+    if (std::getenv("LAB_NODISTORT")) o.refine_where_smoothing_distorts = false;
     if (const char* x = std::getenv("LAB_SIGMA")) o.noise = std::atof(x);  // given noise (sigma / mean edge)
     if (std::getenv("LAB_NOCAP")) {  // the finest IMF's estimate without the flat hinges' cap
       HamiltonianCycle cycle;
@@ -1270,10 +1290,40 @@ int main(int argc, char** argv) {
     std::snprintf(name, sizeof name, "denoise (u%d s%d f%d sig %.3f r%d p%d fl%.4f sc%.2f)", int(r.untangled), int(r.smoothed_instead), int(r.flat_parts_refined),
                   r.sigma_used, r.refine_rounds, r.refine_normal_passes, double(r.flipped_faces) / f.rows(), r.refine_scaled);
     show(name, out);
+    const std::vector<unsigned char> folded_out = folded_faces(out, f);
+    const int out_folded = static_cast<int>(std::count(folded_out.begin(), folded_out.end(), 1));
+    std::printf("  item 17: smoothing move %.3f noise RMS, folded %.4f, distorts %d; result folded %.4f\n", r.smoothing_move,
+                double(r.folded_faces) / f.rows(), int(r.smoothing_distorts), double(out_folded) / f.rows());
     std::printf("  crease contrast %.2f (input %.2f); estimate imf %.4f hinge %.4f capped %d\n", r.crease_contrast, crease_contrast(noisy, f), r.noise.imf_sigma / std::max(1e-300, r.noise.mean_edge), r.noise.hinge_sigma / std::max(1e-300, r.noise.mean_edge), int(r.noise.capped()));
     std::printf("  steps");
     for (double st : r.refine_steps) std::printf(" %.3f", st);
     std::printf("\n");
+    if (const char* x = std::getenv("LAB_SMOOTHOWN")) {  // experiment: own-normal rounds after the smoothing route
+      GuidedNormalDenoiseOptions b;
+      b.guidance = NormalGuidance::OwnNormal;
+      b.sigma = kOwnNormalSigma;
+      b.normal_passes = std::getenv("LAB_SOP") ? std::atoi(std::getenv("LAB_SOP")) : 8;
+      b.vertex_iterations = 20;
+      Positions cur = out;
+      for (int k = 0; k < std::atoi(x); ++k) {
+        Positions g;
+        guided_normal_denoise(cur, f, b, g, err);
+        {
+          const Positions n0 = unit_face_normals(cur, f), n1 = unit_face_normals(g, f);
+          double ang = 0;
+          for (Eigen::Index i = 0; i < f.rows(); ++i) ang += std::acos(std::clamp(n0.row(i).dot(n1.row(i)), -1.0, 1.0));
+          const double mv = std::sqrt((g - cur).rowwise().squaredNorm().mean()) / (r.sigma_used * h);
+          int flat0 = 0, flat1 = 0, tot = 0;
+          for (const auto& a : dihedral_angles(cur, f)) { flat0 += a.radians < 2.0 * M_PI / 180; ++tot; }
+          for (const auto& a : dihedral_angles(g, f)) flat1 += a.radians < 2.0 * M_PI / 180;
+          std::printf("  own-round stats: move %.3f sigma, normal change %.2f deg, flat<2deg %.3f -> %.3f\n", mv, ang / f.rows() * 180 / M_PI, double(flat0) / tot, double(flat1) / tot);
+        }
+        cur = g;
+        char nm[80];
+        std::snprintf(nm, sizeof nm, "smoothing + own round %d", k + 1);
+        show(nm, cur);
+      }
+    }
     if (std::getenv("LAB_GUIDED")) {
       Positions g;
       guided_normal_denoise(noisy, f, GuidedNormalDenoiseOptions{}, g, err);
@@ -1284,6 +1334,7 @@ int main(int argc, char** argv) {
       b.vertex_iterations = 10;
       guided_normal_denoise(noisy, f, b, g, err);
       show("bilateral normal", g);
+      std::printf("  crease contrast of bilateral normal %.2f\n", crease_contrast(g, f));
     }
     return 0;
   }

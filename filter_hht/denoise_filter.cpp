@@ -31,12 +31,15 @@ void declare(const MeshDocument&, RichParameterList& p) {
   p.addParam(RichBool("untangle", d.untangle, "Untangle folded triangles first",
                       "Noise with a tangential part (a scanner's) folds small triangles over, which no normal filter "
                       "repairs. When more than 0.75% of the faces point away from those of the noise-adaptive "
-                      "smoothing (HHT: Adaptive Smooth), the denoiser starts from that smoothing."));
+                      "smoothing (HHT: Adaptive Smooth), the denoiser starts from that smoothing; not when the "
+                      "smoothing moves the mesh further than the noise did and fewer than 10% of its faces are folded "
+                      "(a coarse CAD export, whose few-edge features it would flatten: refined from the input)."));
   p.addParam(RichBool("smoothCreaseless", d.smooth_surfaces_by_smoothing, "Smooth surfaces without sharp creases",
                       "When the smoothed mesh shows no sharp creases (the 98th percentile of its dihedral angles under "
                       "9 times their median: organic models), the result is HHT: Adaptive Smooth's instead of the "
                       "refinement, which would facet it; not on a mesh whose exactly flat parts capped the noise "
-                      "estimate and that needed no untangling (a lightly noisy CAD part). Turn off to force the refinement, e.g. on a CAD part with "
+                      "estimate and that needed no untangling (a lightly noisy CAD part), nor on one that the smoothing "
+                      "distorts (see Untangle). Turn off to force the refinement, e.g. on a CAD part with "
                       "rounded edges. Ignored with the paper's stage on."));
   p.addParam(RichInt("refineRounds", d.refine_rounds, "Refinement rounds (0 = by the noise)",
                      "Rounds of guided normal filtering and vertex update (0 to 100); 0 takes one per 10% of noise "
@@ -185,6 +188,10 @@ bool apply(FilterRun& run) {
     run.log(QString("  untangling: %1 faces flipped against the noise-adaptive smoothing; %2")
                 .arg(report.flipped_faces)
                 .arg(report.untangled ? "started from that smoothing" : "started from the input"));
+  if (report.smoothing_distorts)
+    run.log(QString("  that smoothing moved the mesh by %1 times the noise's RMS with %2% of its faces folded: it "
+                    "distorts features a few edges wide (a coarse CAD export); refined from the input, not smoothed")
+                .arg(report.smoothing_move, 0, 'f', 2).arg(100.0 * report.folded_faces / faces.rows(), 0, 'f', 1));
   if (o.paper_stage) {
     run.log(QString("  paper's stage: %1 lines by EMD, %2 by 1D Laplacian; low-pass at %3 cycles/sample along %4 "
                     "cycle(s), %5 IMFs on the first; reconstruction lambda %6, %7 CG iterations")

@@ -195,13 +195,10 @@ int flipped_faces(const Positions& result, const Positions& reference, const Fac
     const Eigen::RowVector3d a = p.row(faces(f, 0));
     return Eigen::RowVector3d((p.row(faces(f, 1)) - a).cross(p.row(faces(f, 2)) - a));
   };
-  const Positions corner_sums = summed_area_vectors(reference, faces);
+  const std::vector<unsigned char> folded = folded_faces(reference, faces);
   int flipped = 0;
-  for (Eigen::Index f = 0; f < faces.rows(); ++f) {
-    const Eigen::RowVector3d before = area(reference, f);
-    if (before.dot(corner_sums.row(faces(f, 0)) + corner_sums.row(faces(f, 1)) + corner_sums.row(faces(f, 2))) < 0) continue;
-    flipped += before.dot(area(result, f)) < 0;
-  }
+  for (Eigen::Index f = 0; f < faces.rows(); ++f)
+    flipped += !folded[static_cast<size_t>(f)] && area(reference, f).dot(area(result, f)) < 0;
   return flipped;
 }
 

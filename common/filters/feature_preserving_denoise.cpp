@@ -2,6 +2,7 @@
 
 #include "mesh/crease_contrast.h"
 #include "mesh/faces_near_creases.h"
+#include "mesh/vertex_normals.h"
 #include "reconstruction/flip_guard.h"
 
 #include "mesh/mesh_checks.h"
@@ -218,7 +219,15 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
       };
       report.flipped_faces += normal(positions).dot(normal(smoothed)) < 0;
     }
-    report.untangled = options.untangle && report.flipped_faces > kTangledShare * static_cast<double>(faces.rows());
+    // A smoothing that moves the mesh further than the noise did distorts it (item 17).
+    const double noise_rms = std::sqrt(3.0) * sigma * mean_edge_length(positions, faces);
+    report.smoothing_move = noise_rms > 0 ? std::sqrt((smoothed - positions).rowwise().squaredNorm().mean()) / noise_rms : 0;
+    const std::vector<unsigned char> folded = folded_faces(positions, faces);
+    report.folded_faces = static_cast<int>(std::count(folded.begin(), folded.end(), 1));
+    report.smoothing_distorts = options.refine_where_smoothing_distorts && report.smoothing_move > kDistortingMove &&
+                                report.folded_faces < kHeavilyFolded * static_cast<double>(faces.rows());
+    report.untangled = options.untangle && !report.smoothing_distorts &&
+                       report.flipped_faces > kTangledShare * static_cast<double>(faces.rows());
     if (report.untangled) start = smoothed;
     clock.done("untangling");
     // A surface without sharp creases (organic): the guided refinement, made for creases, would
@@ -227,7 +236,7 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     report.crease_contrast = crease_contrast(angles);
     const bool no_creases = report.crease_contrast < kCreaseContrast;
     report.flat_parts_refined = no_creases && options.refine_flat_parts && report.noise.capped() && !report.untangled;
-    if (route && no_creases && !report.flat_parts_refined) {
+    if (route && no_creases && !report.flat_parts_refined && !report.smoothing_distorts) {
       step(40, "No sharp creases: adaptive smoothing");
       smoothing = NoiseAdaptiveSmoothingOptions{};  // the adaptive smoothing's own filter
       smoothing.noise = sigma;

@@ -33,6 +33,11 @@
 //    facets them; not a mesh with exactly flat parts (its noise estimate capped by the flat
 //    hinges) that needed no untangling: a lightly noisy coarse CAD part, whose few-vertex creases
 //    the smoothing of the crease contrast flattens;
+//  - a mesh that the noise-level smoothing moves further than the noise did (kDistortingMove) is
+//    refined from its input, neither untangled nor smoothed, unless a tenth of its faces are folded
+//    (kHeavilyFolded): on a coarse CAD export, whose features are a few edges wide, the smoothing
+//    turns faces over by itself, which the tangle test took for noise, and flattens the features,
+//    which no refinement brings back (docs/quality.md item 17);
 //  - the paper's HHT stage above is off by default (paper_stage): measured, it makes the result
 //    worse than the refinement alone on most cases (docs/quality.md).
 #pragma once
@@ -72,6 +77,15 @@ constexpr double kRefineMoveToNoise = 0.75;
 // refinement: on the corpus organic meshes read 5-9, CAD parts with creases 9.5-22 (docs/quality.md).
 constexpr double kCreaseContrast = 9.0;
 
+// The noise-level smoothing distorts a mesh whose features are a few edges wide (a coarse CAD
+// export): it moves it by more than the noise's RMS (sqrt(3) sigma) times kDistortingMove, where
+// on the corpus's organic and CAD meshes it moves it by 0.55-0.96 of it. Such a mesh is refined
+// from its input, neither untangled nor smoothed, unless at least kHeavilyFolded of its faces are
+// folded against their corners' normals (heavy tangential noise, which only the smoothing
+// undoes). docs/quality.md item 17.
+constexpr double kDistortingMove = 1.0;
+constexpr double kHeavilyFolded = 0.1;
+
 // The refinement's range width on faces not within one ring of an edge sharper than
 // kCreaseDihedral degrees on the noise-level smoothing (docs/quality.md item 14): the narrow
 // width there (refine_normal_sigma) left turbine's curved blades faceted.
@@ -100,6 +114,7 @@ struct DenoiseOptions {
   bool refine_flat_parts = true;  // a mesh with exactly flat parts (its noise estimate capped by the
                                   // flat hinges: a CAD part) keeps the refinement unless untangled;
                                   // with the noise given (no estimate) the rule cannot apply
+  bool refine_where_smoothing_distorts = true;  // kDistortingMove, kHeavilyFolded (item 17)
   bool detect_features = true;  // false: the torus-like case, no feature separation (Fig. 8)
   bool show_features = false;   // detect them for the caller (report.type, feature_lines) even where
                                 // no stage uses them; otherwise only the paper's stage asks for them
@@ -131,10 +146,13 @@ struct DenoiseReport {
   double sigma_used = 0;       // relative to the mean edge
   bool untangled = false;      // started from the noise-adaptive smoothing
   int flipped_faces = 0;       // input faces flipped against that smoothing
+  double smoothing_move = 0;   // that smoothing's RMS move, in noise RMS (sqrt(3) sigma)
+  int folded_faces = 0;        // input faces folded against their corners' normals
   double crease_contrast = 0;  // of that smoothing (0: not measured)
   bool noise_free = false;     // the estimate read less than kNoiseFree: the result is the input
   bool smoothed_instead = false;  // no sharp creases: the result is the adaptive smoothing
   bool flat_parts_refined = false;  // no sharp creases read, but flat parts: refined all the same
+  bool smoothing_distorts = false;  // the noise-level smoothing moved the mesh beyond the noise: refined from the input
   int refine_rounds_asked = 0;   // given, or set by the noise
   int refine_rounds = 0;         // done
   std::vector<double> refine_steps;  // with rounds set by the noise: the move of each round after the

@@ -21,6 +21,17 @@ Positions area_weighted_vertex_normals(const Positions& positions, const Faces& 
   return normals;
 }
 
+std::vector<unsigned char> folded_faces(const Positions& positions, const Faces& faces) {
+  const Positions sums = summed_area_vectors(positions, faces);
+  std::vector<unsigned char> folded(static_cast<size_t>(faces.rows()), 0);
+  for (Eigen::Index f = 0; f < faces.rows(); ++f) {
+    const Eigen::RowVector3d a = positions.row(faces(f, 0));
+    const Eigen::RowVector3d n = (positions.row(faces(f, 1)) - a).cross(positions.row(faces(f, 2)) - a);
+    folded[static_cast<size_t>(f)] = n.dot(sums.row(faces(f, 0)) + sums.row(faces(f, 1)) + sums.row(faces(f, 2))) < 0;
+  }
+  return folded;
+}
+
 Positions unit_face_normals(const Positions& positions, const Faces& faces) {
   Positions normals(faces.rows(), 3);
   for (Eigen::Index f = 0; f < faces.rows(); ++f) {

@@ -4,6 +4,8 @@
 
 #include "mesh/mesh_arrays.h"
 
+#include <vector>
+
 namespace hht {
 
 Positions area_weighted_vertex_normals(const Positions& positions, const Faces& faces);
@@ -11,6 +13,10 @@ Positions area_weighted_vertex_normals(const Positions& positions, const Faces& 
 // The same sums, unnormalised (twice the incident area along the normal): what a face is
 // folded against, in the flip guard and in the evaluation's count of faces turned over.
 Positions summed_area_vectors(const Positions& positions, const Faces& faces);
+
+// Per face, 1 where its area vector points against the sum of its corners' summed area vectors:
+// a face folded over its neighbours (noise with a tangential part folds small triangles).
+std::vector<unsigned char> folded_faces(const Positions& positions, const Faces& faces);
 
 // Per-face unit normals by the winding; zero for zero-area faces.
 Positions unit_face_normals(const Positions& positions, const Faces& faces);
