@@ -377,7 +377,7 @@ int main(int argc, char** argv) {
   const double level = std::atof(argv[2]);
   const int n = clean.rows();
   const double h = mean_edge_length(clean, f);
-  std::mt19937 rng(11);
+  std::mt19937 rng(std::getenv("LAB_SEED") ? std::atoi(std::getenv("LAB_SEED")) : 11);
   std::normal_distribution<double> g(0, level * h);
   Positions noisy = clean;
   const bool along_normals = argc > 4 && std::string(argv[4]) == "normal";
