@@ -484,6 +484,26 @@ TEST(MeshlabserverParameters, DenoiseSmoothsSurfacesWithoutCreases) {
   }
 }
 
+// A coarse CAD export that the noise-level smoothing distorts (rotor, 5% noise along the normals):
+// denoise.mlx refines it from the input (item 17), as the library does, and the log says why.
+TEST(MeshlabserverParameters, DenoiseRefinesADistortedCoarseExportFromItsInput) {
+  const Input in = read_input("rotor");
+  Positions noisy;
+  std::string input;
+  ASSERT_NO_FATAL_FAILURE(write_noisy("rotor", in, 5.0, NoiseDirection::Normal, 11, noisy, input));
+  Positions expected;
+  DenoiseReport report;
+  std::string error;
+  ASSERT_TRUE(feature_preserving_denoise(noisy, in.faces, DenoiseOptions{}, expected, report, error)) << error;
+  EXPECT_TRUE(report.smoothing_distorts);
+  EXPECT_FALSE(report.untangled);
+  const ServerRun run = run_resource(input, "denoise.mlx", {}, "denoise_distorted");
+  expect_positions(saved_positions(run), expected, in.diagonal, "distorted");
+  EXPECT_NE(run.log.find("distorts features a few edges wide (a coarse CAD export); refined from the input"), std::string::npos)
+      << run.log;
+  EXPECT_NE(run.log.find("started from the input"), std::string::npos) << run.log;
+}
+
 // ------------------------------------------------------------------------------ compare
 
 TEST(MeshlabserverParameters, CompareTwoDifferentMeshesEveryOutput) {
