@@ -9,6 +9,7 @@
 #include "evaluation/denoise_metrics.h"
 #include "evaluation/gaussian_noise.h"
 #include "mesh/mean_curvature.h"
+#include "mesh/cotangent_laplacian.h"
 #include "mesh/vertex_normals.h"
 #include "mesh/vertex_adjacency.h"
 #include "reconstruction/biharmonic_low_pass.h"
@@ -745,6 +746,66 @@ int main(int argc, char** argv) {
       }
       std::printf("  strength %.2f  true E_a %6.2f rms %5.1f | R2R angle %.3f area %.4f weighted %.4f\n", strength, truth.ea, truth.rms, ang / draws,
                   area / draws / f.rows(), area_weighted / draws / f.rows());
+    }
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[3]) == "K") {  // the low-pass's normal part with clamped cotangent weights
+    const double sig = estimated_sigma(noisy, f);
+    const double scale = 1.0 / h;
+    const Positions v = noisy * scale;
+    const Eigen::SparseMatrix<double> Lu = uniform_laplacian(f, n);
+    // row-normalised cotangent weights, clamped to a small positive floor (a proxy for the intrinsic Delaunay Laplacian)
+    const Positions cot = corner_cotangents(noisy, f);
+    std::map<std::pair<int, int>, double> w;
+    for (Eigen::Index i = 0; i < f.rows(); ++i)
+      for (int k = 0; k < 3; ++k) {
+        int a = f(i, (k + 1) % 3), b = f(i, (k + 2) % 3);
+        if (a > b) std::swap(a, b);
+        w[{a, b}] += 0.5 * cot(i, k);
+      }
+    double mean_w = 0;
+    for (auto& [e, x] : w) mean_w += std::max(x, 0.0);
+    mean_w /= w.size();
+    const double floor_w = std::getenv("LAB_WFLOOR") ? std::atof(std::getenv("LAB_WFLOOR")) : 0.05;
+    Eigen::VectorXd rowsum = Eigen::VectorXd::Zero(n);
+    for (auto& [e, x] : w) {
+      x = std::max(x, floor_w * mean_w);
+      rowsum[e.first] += x;
+      rowsum[e.second] += x;
+    }
+    std::vector<Eigen::Triplet<double>> t;
+    for (auto& [e, x] : w) {
+      t.emplace_back(e.first, e.second, -x / rowsum[e.first]);
+      t.emplace_back(e.second, e.first, -x / rowsum[e.second]);
+    }
+    for (int i = 0; i < n; ++i) t.emplace_back(i, i, 1.0);
+    Eigen::SparseMatrix<double> Lc(n, n);
+    Lc.setFromTriplets(t.begin(), t.end());
+    auto lowpass = [&](const Eigen::SparseMatrix<double>& L, double mu) {
+      const Eigen::SparseMatrix<double> L2 = L * L;
+      Eigen::SparseMatrix<double> A = Eigen::SparseMatrix<double>(L2.transpose() * L2) + mu * mu * Eigen::SparseMatrix<double>(L.transpose() * L);
+      for (int i = 0; i < n; ++i) A.coeffRef(i, i) += std::pow(mu, 4);
+      Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
+      Positions out(n, 3);
+      for (int k = 0; k < 3; ++k) out.col(k) = solver.solve(Eigen::VectorXd(std::pow(mu, 4) * v.col(k)));
+      return out;
+    };
+    for (double st : {0.5, 0.7, 1.0, 1.4, 2.0}) {
+      const double mu = kMuScale / std::sqrt(st * sig);
+      const Positions xu = lowpass(Lu, mu), xc = lowpass(Lc, mu);
+      const Positions nu = area_weighted_vertex_normals(xu, f);
+      Positions comb = v;
+      for (int i = 0; i < n; ++i) {
+        const Eigen::RowVector3d du = xu.row(i) - v.row(i), dc = xc.row(i) - v.row(i), nn = nu.row(i);
+        comb.row(i) = v.row(i) + nn * dc.dot(nn) + (du - nn * du.dot(nn));
+      }
+      char name[80];
+      std::snprintf(name, sizeof name, "s%.1f uniform", st);
+      show(name, xu / scale);
+      std::snprintf(name, sizeof name, "s%.1f cot", st);
+      show(name, xc / scale);
+      std::snprintf(name, sizeof name, "s%.1f cot normal+uni tang", st);
+      show(name, comb / scale);
     }
     return 0;
   }
