@@ -79,7 +79,7 @@ constexpr double kCreaseContrast = 9.0;
 
 // The noise-level smoothing distorts a mesh whose features are a few edges wide (a coarse CAD
 // export): it moves it by more than the noise's RMS (sqrt(3) sigma) times kDistortingMove, where
-// on the corpus's organic and CAD meshes it moves it by 0.55-0.96 of it. Such a mesh is refined
+// on the corpus's organic and CAD meshes it moves it by at most 0.96 of it. Such a mesh is refined
 // from its input, neither untangled nor smoothed, unless at least kHeavilyFolded of its faces are
 // folded against their corners' normals (heavy tangential noise, which only the smoothing
 // undoes). docs/quality.md item 17.
