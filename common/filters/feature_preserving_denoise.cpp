@@ -196,6 +196,7 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     return true;
   }
 
+  const double edge = mean_edge_length(positions, faces);
   Positions start = positions;
   std::vector<unsigned char> near_creases;  // of the noise-level smoothing, for the refinement's range widths
   const bool route = options.smooth_surfaces_by_smoothing && !options.paper_stage;
@@ -220,7 +221,7 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
       report.flipped_faces += normal(positions).dot(normal(smoothed)) < 0;
     }
     // A smoothing that moves the mesh further than the noise did distorts it (item 17).
-    const double noise_rms = std::sqrt(3.0) * sigma * mean_edge_length(positions, faces);
+    const double noise_rms = std::sqrt(3.0) * sigma * edge;
     report.smoothing_move = noise_rms > 0 ? std::sqrt((smoothed - positions).rowwise().squaredNorm().mean()) / noise_rms : 0;
     const std::vector<unsigned char> folded = folded_faces(positions, faces);
     report.folded_faces = static_cast<int>(std::count(folded.begin(), folded.end(), 1));
@@ -282,7 +283,6 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
           static_cast<double>(std::count(near_creases.begin(), near_creases.end(), 1)) / static_cast<double>(near_creases.size());
     }
     refine.vertex_iterations = options.refine_vertex_iterations;
-    const double edge = mean_edge_length(positions, faces);
     const Positions rebuilt = result;
     // Rounds set by the noise end early at one that drifts, and go on (up to kExtraRoundsFactor times
     // as many) while each converges (kRoundDriftStep, kRoundConvergedStep); a given count is done as is.
