@@ -278,6 +278,13 @@ NoiseAdaptiveSmoothingOptions lab_options() {
 }
 
 // The noise estimate the smoothing starts from, sigma / mean edge.
+// x with P(|N(0, 1)| <= x) = q.
+double folded_quantile(double q) {
+  double low = 0, high = 10;
+  for (int i = 0; i < 60; ++i) (std::erf(0.5 * (low + high) / std::sqrt(2.0)) < q ? low : high) = 0.5 * (low + high);
+  return 0.5 * (low + high);
+}
+
 double estimated_sigma(const Positions& p, const Faces& f) {
   std::string err;
   HamiltonianCycle cycle;
@@ -393,6 +400,90 @@ int main(int argc, char** argv) {
     std::printf("  %-28s E_a %6.2f  rms %6.1f  flips %d (%d not folded in clean)\n", name, s.ea, s.rms, s.flips, s.new_flips);
   };
   std::printf("%s n=%d level %.2f\n", argv[1], n, level);
+  if (argc > 3 && std::string(argv[3]) == "I") {  // the noise estimates only: IMF, and |hinge height| quantiles over |N(0,1)|'s
+    auto read = [&](const Positions& p) {
+      std::string err;
+      HamiltonianCycle cycle;
+      hamiltonian_cycle(f, n, CycleOptions{}, cycle, err);
+      NoiseEstimate est;
+      estimate_noise(p, f, cycle, EmdOptions{}, est, err);
+      std::vector<double> hs = hinge_heights(p, f, vertex_adjacency(f, n));
+      for (double& x : hs) x = std::abs(x) / h;
+      std::sort(hs.begin(), hs.end());
+      std::printf(" imf %.4f hinge", est.imf_sigma / h);
+      for (double q : {0.02, 0.05, 0.1, 0.2, 0.3, 0.5}) {
+        const double x = hs[static_cast<size_t>(q * (hs.size() - 1))];
+        std::printf(" %.4f", x / folded_quantile(q));
+      }
+      std::printf(" zero %.3f", double(std::count(hs.begin(), hs.end(), 0.0)) / hs.size());
+      // Mixture fit of the low half of the CDF: q = p erf(x / (sigma sqrt 2)) + c1 x + c2 x^2 (flat hinges: pure noise;
+      // the others spread wider), sigma on a log grid, (p, c1, c2) by least squares.
+      const int K = 50;
+      std::vector<double> xs(K), qs(K);
+      for (int k = 0; k < K; ++k) {
+        qs[k] = 0.5 * (k + 1) / K;
+        xs[k] = hs[static_cast<size_t>(qs[k] * (hs.size() - 1))];
+      }
+      double best = 1e300, best_sigma = 0, best_p = 0;
+      const double top = xs[K - 1];
+      for (int g = 0; g < 120 && top > 0; ++g) {
+        const double sg = top * std::pow(10.0, -3.0 + 3.5 * g / 119.0);
+        Eigen::MatrixXd A(K, 3);
+        Eigen::VectorXd b(K);
+        for (int k = 0; k < K; ++k) {
+          A(k, 0) = std::erf(xs[k] / (sg * std::sqrt(2.0)));
+          A(k, 1) = xs[k] / top;
+          A(k, 2) = (xs[k] / top) * (xs[k] / top);
+          b[k] = qs[k];
+        }
+        Eigen::Vector3d c = A.colPivHouseholderQr().solve(b);
+        if (c[0] < 0.02 || c[0] > 1.05 || c[1] < 0) continue;
+        const double r = (A * c - b).squaredNorm();
+        if (r < best) { best = r; best_sigma = sg; best_p = c[0]; }
+      }
+      std::printf(" fit %.4f p %.2f", best_sigma, best_p);
+    };
+    if (std::getenv("LAB_FLATHINGES")) {  // the noisy heights of the clean mesh's exactly flat hinges, by divisor
+      const VertexAdjacency adj = vertex_adjacency(f, n);
+      std::map<std::pair<int, int>, std::vector<int>> opposite;
+      for (Eigen::Index i = 0; i < f.rows(); ++i)
+        for (int k = 0; k < 3; ++k) {
+          int a = f(i, (k + 1) % 3), b = f(i, (k + 2) % 3);
+          opposite[{std::min(a, b), std::max(a, b)}].push_back(f(i, k));
+        }
+      auto hinge = [&](const Positions& p, int a, int b, int c, int d, double& divisor) {
+        const Eigen::Vector3d A = p.row(a), B = p.row(b), C = p.row(c), D = p.row(d);
+        Eigen::Vector3d nn = (B - A).cross(C - A);
+        const double ta = nn.norm();
+        nn /= ta;
+        const double height = nn.dot(D - A);
+        const Eigen::Vector3d foot = D - height * nn;
+        const double beta = (foot - A).cross(C - A).dot(nn) / ta, gamma = (B - A).cross(foot - A).dot(nn) / ta, alpha = 1 - beta - gamma;
+        divisor = std::sqrt(1 + alpha * alpha + beta * beta + gamma * gamma);
+        return height / divisor;
+      };
+      std::vector<std::vector<double>> bins(4);
+      for (const auto& [e, opp] : opposite) {
+        if (opp.size() != 2) continue;
+        double dv;
+        const double hc = hinge(clean, e.first, e.second, opp[0], opp[1], dv);
+        if (!(std::abs(hc) < 1e-9 * h)) continue;
+        const double hn = hinge(noisy, e.first, e.second, opp[0], opp[1], dv) / h;
+        bins[dv < 1.5 ? 0 : dv < 3 ? 1 : dv < 10 ? 2 : 3].push_back(hn * hn);
+      }
+      for (int b = 0; b < 4; ++b) {
+        double m = 0;
+        for (double x : bins[b]) m += x;
+        std::printf("  divisor bin %d: %zu flat hinges, rms/true %.3f\n", b, bins[b].size(), bins[b].empty() ? 0 : std::sqrt(m / bins[b].size()) / level);
+      }
+    }
+    std::printf("clean");
+    read(clean);
+    std::printf(" | noisy");
+    read(noisy);
+    std::printf(" | true %.3f\n", level);
+    return 0;
+  }
   {
     const Positions vn = summed_area_vectors(clean, f);  // unnormalised, as the harness sums them
     const Positions fn = face_normals(clean, f);
