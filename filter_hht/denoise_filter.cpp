@@ -27,7 +27,9 @@ void declare(const MeshDocument&, RichParameterList& p) {
                        "Standard deviation of the noise in percent of the mean edge length (0 to 1000). 0 estimates "
                        "it from the finest IMF of the one-ring height signal along a Hamiltonian cycle, capped by the "
                        "exactly flat hinges of CAD meshes (a clean CAD export reads as noise-free and is left as it "
-                       "is); it sets the number of refinement rounds and the untangling smoothing."));
+                       "is); it sets the number of refinement rounds and the untangling smoothing. A clean curved mesh "
+                       "reads its own fine detail as up to 15% noise (the log says when an estimate is in that range): "
+                       "to keep that detail on a mesh you know to be clean or nearly so, give a small value."));
   p.addParam(RichBool("untangle", d.untangle, "Untangle folded triangles first",
                       "Noise with a tangential part (a scanner's) folds small triangles over, which no normal filter "
                       "repairs. When more than 0.75% of the faces point away from those of the noise-adaptive "

@@ -70,6 +70,11 @@ QString stage_times_line(const std::vector<hht::StageTime>& stages) {
 }
 
 QString noise_estimate_text(const hht::NoiseEstimate& e) {
+  if (hht::may_be_surface_detail(e))
+    return QString("estimated from the finest IMF; clean meshes read up to %1% from their own detail at the scale of "
+                   "their edges, which no estimate tells from noise: if this mesh had little or no noise, undo and "
+                   "give noisePercent")
+        .arg(100 * hht::kCleanDetailReads, 0, 'f', 0);
   if (!e.capped()) return "estimated from the finest IMF";
   return QString("estimated: the finest IMF read %1%, capped at %2 x the flat hinges' %3%: exactly flat parts, "
                  "so the IMF read the triangulation, not noise%4")

@@ -34,6 +34,10 @@ double folded_normal_quantile(double q) {
 
 }  // namespace
 
+bool may_be_surface_detail(const NoiseEstimate& estimate) {
+  return !estimate.capped() && estimate.relative() >= kNoiseFree && estimate.relative() <= kCleanDetailReads;
+}
+
 Eigen::VectorXd one_ring_heights(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency) {
   const int n = static_cast<int>(positions.rows());
   const Positions normals = area_weighted_vertex_normals(positions, faces);

@@ -60,9 +60,19 @@ constexpr double kHingeQuantile = 0.1;
 constexpr double kFlatHingeBound = 2.5;
 constexpr int kMinHinges = 50;
 
+// Clean meshes without flat parts read up to this (sigma / mean edge) from their own detail at the
+// edge scale: b9_mesh 0.140, bones 0.102, femur 0.102, bull 0.090 (docs/quality.md, "Goals not
+// reached": that detail is as white as noise, so no reading tells the two apart). An estimate at
+// or below it that no flat hinge capped may be such detail rather than noise: the filters say so.
+constexpr double kCleanDetailReads = 0.15;
+
 // Part of the height noise's standard deviation (as MAD / 0.6745) that the first IMF holds,
 // under the default EMD options (see above).
 constexpr double kImf1Share = 1.0;
+
+// The estimate is within what a clean mesh's own detail reads (kCleanDetailReads), above the
+// noise-free reading, and not capped by flat hinges (a capped one read the noise itself).
+bool may_be_surface_detail(const NoiseEstimate& estimate);
 
 // Per-vertex height over the one-ring mean, along the normal (0 for vertices of no face).
 Eigen::VectorXd one_ring_heights(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency);
