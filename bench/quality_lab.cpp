@@ -274,10 +274,11 @@ NoiseAdaptiveSmoothingOptions lab_options() {
   if (const char* wa = std::getenv("LAB_WEAKER")) o.weaker_allowed = std::atof(wa);
   if (const char* g = std::getenv("LAB_FIRST")) o.first_order = std::atof(g);
   if (const char* b = std::getenv("LAB_CVBIAS")) o.selection_bias = std::atof(b);
+  if (const char* x = std::getenv("LAB_GIVEN")) o.noise = std::atof(x);  // the noise given (sigma / mean edge)
+  if (std::getenv("LAB_SURE")) o.unbiased_risk = true;  // with LAB_GIVEN: the cut-off by Stein's risk
   return o;
 }
 
-// The noise estimate the smoothing starts from, sigma / mean edge.
 // x with P(|N(0, 1)| <= x) = q.
 double folded_quantile(double q) {
   double low = 0, high = 10;
@@ -285,6 +286,7 @@ double folded_quantile(double q) {
   return 0.5 * (low + high);
 }
 
+// The noise estimate the smoothing starts from, sigma / mean edge.
 double estimated_sigma(const Positions& p, const Faces& f) {
   std::string err;
   HamiltonianCycle cycle;

@@ -20,9 +20,10 @@ void declare(const MeshDocument&, RichParameterList& p) {
                        "Standard deviation of the noise per coordinate in percent of the mean edge length. 0 "
                        "estimates it from the finest IMF of the one-ring height signal along a Hamiltonian cycle, "
                        "capped by the exactly flat hinges of CAD meshes (a clean CAD export reads as noise-free and "
-                       "is left as it is); give a value only when you know it, or to smooth such a mesh (0 to 1000). A clean "
-                       "curved mesh reads its own fine detail as up to 15% noise (the log says when an estimate is in "
-                       "that range): to keep that detail on a mesh you know to be clean or nearly so, give a small value."));
+                       "is left as it is); give a value only when you know it, or to smooth such a mesh (0 to 1000): the "
+                       "cut-off is then the one that minimises Stein's unbiased risk with that noise. A clean curved mesh "
+                       "reads its own fine detail as up to 15% noise (the log says when an estimate is in that range): "
+                       "to keep that detail on a mesh you know to be clean or nearly so, give a small value."));
   declare_cycle_and_emd_parameters(p);
 }
 
@@ -35,7 +36,7 @@ bool apply(FilterRun& run) {
   hht::NoiseAdaptiveSmoothingOptions options;
   options.strength = par.getFloat("strength");
   options.noise = par.getFloat("noisePercent") / 100.0;
-  options.select_cutoff = !(options.noise > 0);  // a given noise level sets the cut-off alone
+  options.unbiased_risk = options.noise > 0;  // a given noise level is the truth: Stein's risk chooses the cut-off
   options.cycle = cycle_options(par);
   options.emd = emd_options(par);
   if (!check_range("the strength", options.strength, 0.1, 10, run.error) ||
@@ -59,7 +60,11 @@ bool apply(FilterRun& run) {
     run.log(stage_times_line(report.stages));
     return true;
   }
-  if (report.selection_vertices > 0)
+  if (report.cutoff_by_risk)
+    run.log(QString("  cut-off by Stein's unbiased risk with the given noise, on %1 vertices (%2 conjugate gradient "
+                    "iterations)")
+                .arg(report.selection_vertices).arg(report.selection_iterations));
+  else if (report.selection_vertices > 0)
     run.log(QString("  cut-off by cross-validation on %1 vertices (%2 conjugate gradient iterations): %3")
                 .arg(report.selection_vertices).arg(report.selection_iterations)
                 .arg(report.cutoff_selected ? "stronger than the noise level's" : "the noise level's kept"));

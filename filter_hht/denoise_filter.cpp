@@ -27,7 +27,8 @@ void declare(const MeshDocument&, RichParameterList& p) {
                        "Standard deviation of the noise in percent of the mean edge length (0 to 1000). 0 estimates "
                        "it from the finest IMF of the one-ring height signal along a Hamiltonian cycle, capped by the "
                        "exactly flat hinges of CAD meshes (a clean CAD export reads as noise-free and is left as it "
-                       "is); it sets the number of refinement rounds and the untangling smoothing. A clean curved mesh "
+                       "is); it sets the number of refinement rounds and the untangling smoothing, and on a surface without sharp "
+                       "creases the adaptive smoothing's cut-off by Stein's unbiased risk. A clean curved mesh "
                        "reads its own fine detail as up to 15% noise (the log says when an estimate is in that range): "
                        "to keep that detail on a mesh you know to be clean or nearly so, give a small value."));
   p.addParam(RichBool("untangle", d.untangle, "Untangle folded triangles first",
@@ -203,7 +204,9 @@ bool apply(FilterRun& run) {
   if (report.crease_contrast > 0)
     run.log(QString("  crease contrast of the smoothed mesh %1 (below %2: no sharp creases)%3")
                 .arg(report.crease_contrast, 0, 'f', 1).arg(hht::kCreaseContrast)
-                .arg(report.smoothed_instead ? "; the result is the adaptive smoothing (cross-validated cut-off)" : ""));
+                .arg(!report.smoothed_instead ? ""
+                     : o.noise > 0 ? "; the result is the adaptive smoothing (cut-off by Stein's unbiased risk with the given noise)"
+                                   : "; the result is the adaptive smoothing (cross-validated cut-off)"));
   if (report.flat_parts_refined)
     run.log("  no sharp creases read, but the mesh has exactly flat parts (its noise estimate was capped by them): "
             "a CAD part, refined all the same");

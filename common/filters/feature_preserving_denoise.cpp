@@ -241,6 +241,7 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
       step(40, "No sharp creases: adaptive smoothing");
       smoothing = NoiseAdaptiveSmoothingOptions{};  // the adaptive smoothing's own filter
       smoothing.noise = sigma;
+      smoothing.unbiased_risk = options.noise > 0;  // the user's noise level: its cut-off by Stein's risk
       if (!noise_adaptive_smooth(positions, faces, smoothing, result, smoothing_report, error,
                                  [&](int percent, const char*) { step(40 + 59 * percent / 100, "No sharp creases: adaptive smoothing"); }))
         return false;

@@ -12,9 +12,14 @@
 //      * sigma), sigma in mean edges, or a stronger one where generalized cross-validation finds
 //      it better (cutoff_selection.h): the best cut-off depends on the surface as well as on the
 //      noise, and a dense smooth mesh takes a much stronger filter than a coarse detailed one
-//      (select_cutoff; the filter turns it off when the user gives the noise level); its choice
-//      is made kSelectionBias stronger, since its squared risk favours weaker filters than the
-//      angle error does.
+//      (select_cutoff); its choice is made kSelectionBias stronger, since its squared risk favours
+//      weaker filters than the angle error does. When the user gives the noise level
+//      (unbiased_risk), the cut-off instead minimises Stein's unbiased estimate of the same risk
+//      with that sigma, weaker or stronger than the noise law's (kUnbiasedRiskRange,
+//      kStrongestSelected), biased the same way: the law's cut-off is too strong for a mesh whose
+//      own detail at the edge scale outweighs light noise (bull at 2%: 6.28 degrees against the
+//      noisy 4.92; 4.78 so chosen), and the estimate cannot be used so, since it reads that detail
+//      as noise (docs/quality.md item 18).
 //   3. each vertex's move along its tangent plane is capped at kTangentialCap * sigma^2 mean
 //      edges: the uniform Laplacian also slides vertices of an irregular (clean) triangulation
 //      towards their neighbours' centroid, which is no noise; tangential noise is of the order
@@ -62,6 +67,10 @@ constexpr double kRestoredFaceTilt = 60.0;
 // Step 7 runs when at most this share of the faces is still turned over: clean irregular meshes
 // have 0.02-0.08% (cow, femur, bull, man), at 10% noise 0.28-1.1% (docs/quality.md item 13).
 constexpr double kWrinkleShare = 0.0015;
+// With the noise given, Stein's risk is searched from kUnbiasedRiskRange times weaker than the noise
+// law's cut-off to kStrongestSelected times stronger (the solve's iterations grow as 1 / mu^2: on
+// the 1.66M-vertex armadillo at 20%, 4 times stronger took a 65 s solve, 2 times 16 s).
+constexpr double kUnbiasedRiskRange = 4.0;
 // The cross-validated cut-off is divided by this: its squared risk has its minimum at a weaker
 // filter than the mean angle error's (docs/quality.md items 5 and 10).
 constexpr double kSelectionBias = 1.2;
@@ -78,6 +87,7 @@ struct NoiseAdaptiveSmoothingOptions {
   double strength = 1;         // > 1 smooths more, < 1 less
   double mu = 0;               // > 0: this cut-off instead of the one the noise sets (experiments)
   bool select_cutoff = true;   // a stronger cut-off than the noise level's where cross-validation finds one
+  bool unbiased_risk = false;  // `noise` is the truth (the user's): the cut-off by Stein's unbiased risk instead
   bool unturn_wrinkles = true;  // step 7 (the denoiser's untangling counts the smoothing's own turns)
   // Experiments (bench/quality_lab, docs/quality.md items 8-10): the tangential cap's factor
   // (infinity: no cap), the noise law's scale, how much weaker than the noise law's cut-off the
@@ -98,6 +108,7 @@ struct NoiseAdaptiveSmoothingReport {
   bool noise_free = false;     // the estimate read less than kNoiseFree: the result is the input
   double mu = 0;
   bool cutoff_selected = false;  // mu from cross-validation (stronger than the noise level's)
+  bool cutoff_by_risk = false;   // mu from Stein's unbiased risk with the given noise
   int selection_iterations = 0;  // conjugate gradient iterations of the selection's solves
   int selection_vertices = 0;    // vertices it scored on (a sample of a large mesh)
   double max_displacement = 0;

@@ -101,8 +101,9 @@ bool select_cutoff(const VertexAdjacency& full_adjacency, const Positions& full_
         d += std::pow(removed[i] - removed[*j], 2);
         trace_ka += (probes.row(i) - probes.row(*j)).dot(a.row(i) - a.row(*j)) / 3;
       }
-    const double kept_fraction = 1 - trace_ka / trace_k;
-    g = kept_fraction > 0 ? d / (kept_fraction * kept_fraction) : HUGE_VAL;
+    const double kept_fraction = 1 - trace_ka / trace_k, s2 = options.noise_sigma * options.noise_sigma;
+    if (options.noise_sigma > 0) g = d - s2 * trace_k + 2 * s2 * trace_ka;
+    else g = kept_fraction > 0 ? d / (kept_fraction * kept_fraction) : HUGE_VAL;
     return true;
   };
 

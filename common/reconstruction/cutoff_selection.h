@@ -9,7 +9,10 @@
 // tr(K A) is estimated with Rademacher probes (Hutchinson), the same probes at every mu so that the
 // curve is smooth in mu. G is minimised over a geometric grid of mu, refined by a parabola in log mu.
 // A noise estimate could stand in for the GCV denominator (Stein's unbiased risk), but its argmin
-// moves far with a 10% error in sigma (measured); GCV's does not depend on it.
+// moves far with a 10% error in sigma (measured); GCV's does not depend on it. With a noise level
+// known to be right (the user's), Stein's risk is the one to use (noise_sigma):
+//   S(mu) = D(mu) - sigma^2 tr(K) + 2 sigma^2 tr(K A),
+// unbiased for the same edge-difference error, with no 0/0 near the identity.
 //
 // Large meshes: the score is computed on breadth-first patches of at most `sample_vertices`
 // vertices in all, spread over the mesh, so the choice costs the same on any size.
@@ -30,6 +33,7 @@ struct CutoffSelectionOptions {
   int patches = 8;            // patches of a sampled (large) mesh
   double max_error = 1e-4;    // of each solve, in the positions' unit (a mean edge)
   double first_order = 0;     // the low-pass's first-order weight (biharmonic_low_pass.h)
+  double noise_sigma = 0;     // > 0: Stein's unbiased risk with this noise sigma (positions' unit) instead of GCV
 };
 
 struct CutoffSelection {

@@ -566,7 +566,10 @@ TEST(MeshlabserverParameters, AdaptiveSmoothStrengthNoiseAndEmd) {
   };
   const Case cases[] = {
       {"strength", {{"strength", "2.5"}}, [](NoiseAdaptiveSmoothingOptions& o) { o.strength = f(2.5); }},
-      {"noise", {{"noisePercent", "8"}}, [](NoiseAdaptiveSmoothingOptions& o) { o.noise = f(8) / 100.0; }},
+      {"noise", {{"noisePercent", "8"}}, [](NoiseAdaptiveSmoothingOptions& o) {
+         o.noise = f(8) / 100.0;
+         o.unbiased_risk = true;  // a given noise level: the cut-off by Stein's unbiased risk
+       }},
       {"emd", {{"seed", "2"}, {"sdThreshold", "0.3"}, {"maxSifts", "7"}, {"minExtrema", "9"}, {"maxImfs", "2"}},
        [](NoiseAdaptiveSmoothingOptions& o) {
          o.cycle.seed = 2;
@@ -586,6 +589,8 @@ TEST(MeshlabserverParameters, AdaptiveSmoothStrengthNoiseAndEmd) {
     ASSERT_TRUE(noise_adaptive_smooth(n.noisy, n.in.faces, o, expected, report, error)) << error;
     const ServerRun run = run_resource(n.path, "smooth.mlx", c.overrides, "adaptive_" + c.tag);
     expect_positions(saved_positions(run), expected, n.in.diagonal, c.tag);
+    EXPECT_EQ(run.log.find("cut-off by Stein's unbiased risk with the given noise") != std::string::npos, o.unbiased_risk)
+        << run.log;
     if (previous.rows() > 0) {  // each option changes the result
       EXPECT_GT((expected - previous).rowwise().norm().maxCoeff(), 1e-5 * n.in.diagonal) << c.tag;
     }

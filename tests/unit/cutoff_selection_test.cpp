@@ -74,6 +74,32 @@ TEST(CutoffSelection, NearTheBestCutoffWithoutKnowingTheNoise) {
   EXPECT_LT(chosen[0], 0.7 * chosen[1]);  // the smooth dense surface takes the stronger filter
 }
 
+// With the noise known, Stein's unbiased risk picks, among the cut-offs it scored, one whose true
+// risk is near the best, at heavy noise and at light noise that the surface's own detail
+// outweighs (cow at 2%: there the best cut-off is weaker than the noise law's, and the
+// cross-validation's score falls towards the identity).
+TEST(CutoffSelection, SteinsRiskFindsTheBestCutoffWhereTheNoiseIsKnown) {
+  const test::ArrayMesh cow = test::load_data_mesh("cow");
+  for (double level : {0.15, 0.02}) {
+    const Case c = noisy_case(cow, level, 3);
+    CutoffSelectionOptions options;
+    options.mu_largest = 8;
+    options.mu_smallest = 0.1;
+    options.noise_sigma = level;  // the positions are in mean edges
+    CutoffSelection selection;
+    std::string error;
+    ASSERT_TRUE(select_cutoff(c.adjacency, c.noisy, c.normals, options, selection, error)) << error;
+    ASSERT_GE(selection.curve.size(), 3u);
+    double best = HUGE_VAL, best_mu = 0;
+    for (const auto& point : selection.curve) {
+      const double truth = true_risk(c, point.mu);
+      if (truth < best) best = truth, best_mu = point.mu;
+    }
+    EXPECT_LT(true_risk(c, selection.mu), 1.1 * best) << level;
+    EXPECT_NEAR(std::log(selection.mu), std::log(best_mu), std::log(1.5)) << level;
+  }
+}
+
 // Large meshes are scored on patches: the choice stays close to the whole mesh's.
 TEST(CutoffSelection, PatchesOfALargeMeshChooseLikeTheWhole) {
   const Case c = noisy_case(test::sphere(5), 0.15, 4);
