@@ -218,6 +218,23 @@ TEST(NoiseAdaptiveSmoothing, AGivenNoiseLevelChoosesTheCutoffByUnbiasedRisk) {
   }
 }
 
+// A noise level given far too high (10 mean edges, the plugin's largest) drives Stein's risk to
+// cut-offs so strong that the solver cannot reach them: the search stops at the last one it
+// scored, the solve falls back to the noise level's cut-off, and the mesh is smoothed.
+TEST(NoiseAdaptiveSmoothing, ANoiseLevelGivenFarTooHighStillSmooths) {
+  const test::ArrayMesh m = test::load_data_mesh("fandisk");
+  NoiseAdaptiveSmoothingOptions o;
+  o.noise = 10;
+  o.unbiased_risk = true;
+  NoiseAdaptiveSmoothingReport report;
+  const Positions out = smooth(m.positions, m.faces, o, &report);
+  EXPECT_TRUE(report.cutoff_by_risk);
+  EXPECT_TRUE(report.cutoff_unreachable);
+  EXPECT_DOUBLE_EQ(report.mu, kMuScale / std::sqrt(10.0));
+  ASSERT_EQ(out.rows(), m.positions.rows());
+  EXPECT_GT((out - m.positions).rowwise().norm().maxCoeff(), 0.0);
+}
+
 TEST(NoiseAdaptiveSmoothing, IsScaleFree) {
   const test::ArrayMesh s = test::sphere(3);
   const Positions noisy = add_gaussian_noise(s.positions, s.faces, 20, NoiseDirection::Isotropic, 6);
