@@ -279,13 +279,6 @@ NoiseAdaptiveSmoothingOptions lab_options() {
   return o;
 }
 
-// x with P(|N(0, 1)| <= x) = q.
-double folded_quantile(double q) {
-  double low = 0, high = 10;
-  for (int i = 0; i < 60; ++i) (std::erf(0.5 * (low + high) / std::sqrt(2.0)) < q ? low : high) = 0.5 * (low + high);
-  return 0.5 * (low + high);
-}
-
 // The noise estimate the smoothing starts from, sigma / mean edge.
 double estimated_sigma(const Positions& p, const Faces& f) {
   std::string err;
@@ -415,7 +408,7 @@ int main(int argc, char** argv) {
       std::printf(" imf %.4f hinge", est.imf_sigma / h);
       for (double q : {0.02, 0.05, 0.1, 0.2, 0.3, 0.5}) {
         const double x = hs[static_cast<size_t>(q * (hs.size() - 1))];
-        std::printf(" %.4f", x / folded_quantile(q));
+        std::printf(" %.4f", x / folded_normal_quantile(q));
       }
       std::printf(" zero %.3f", double(std::count(hs.begin(), hs.end(), 0.0)) / hs.size());
       // Mixture fit of the low half of the CDF: q = p erf(x / (sigma sqrt 2)) + c1 x + c2 x^2 (flat hinges: pure noise;

@@ -131,43 +131,31 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
   // well under a thousandth of an edge.
   const double noise_cutoff = std::min(options.mu_scale / std::sqrt(std::max(sigma, 1e-12)), 1e3);
   report.mu = options.mu > 0 ? options.mu : noise_cutoff / std::sqrt(options.strength);
-  if (!(options.mu > 0) && options.unbiased_risk && options.noise > 0) {
-    // The noise is known: Stein's unbiased risk needs no floor-free estimate, and unlike the
-    // cross-validation it may go weaker than the law (docs/quality.md item 18).
-    step(20, "Cut-off by Stein's unbiased risk");
+  // The noise given by the user is the truth: Stein's unbiased risk needs no floor-free estimate,
+  // and unlike the cross-validation it may go weaker than the law (docs/quality.md item 18).
+  // Cross-validation minimises a squared error, which large errors dominate, so on its own it
+  // smooths less than the mean angle error wants on coarse detailed meshes: it may only make the
+  // filter stronger than the noise level's (docs/quality.md). Its search starts a little weaker
+  // than that cut-off: nearer the identity its score falls again, spuriously (0/0 in the limit).
+  // Both stop at kStrongestSelected times the noise level's cut-off: the solve's iterations grow
+  // as 1 / mu^2, and the angle error gains little beyond (docs/quality.md).
+  const bool by_risk = !(options.mu > 0) && options.unbiased_risk && options.noise > 0;
+  if (by_risk || (!(options.mu > 0) && options.select_cutoff)) {
+    const char* stage = by_risk ? "Cut-off by Stein's unbiased risk" : "Cut-off by cross-validation";
+    step(20, stage);
     CutoffSelectionOptions search;
-    search.mu_largest = kUnbiasedRiskRange * noise_cutoff;
-    search.mu_smallest = noise_cutoff / kStrongestSelected;  // as the cross-validation's, for the solve's cost
-    search.first_order = options.first_order;
-    search.noise_sigma = sigma;  // the positions are in mean edges
-    CutoffSelection selection;
-    if (!select_cutoff(adjacency, v, smoothed_vertex_normals(v, faces, adjacency), search, selection, error,
-                       [&](double done) { step(20 + static_cast<int>(10 * done), "Cut-off by Stein's unbiased risk"); }))
-      return false;
-    report.mu = selection.mu / options.selection_bias / std::sqrt(options.strength);
-    report.cutoff_by_risk = true;
-    report.selection_iterations = selection.iterations;
-    report.selection_vertices = selection.sampled_vertices;
-    clock.done("cut-off selection");
-  } else if (!(options.mu > 0) && options.select_cutoff) {
-    // Cross-validation minimises a squared error, which large errors dominate, so on its own it
-    // smooths less than the mean angle error wants on coarse detailed meshes: it may only make the
-    // filter stronger than the noise level's (docs/quality.md). Its search starts a little weaker
-    // than that cut-off: nearer the identity its score falls again, spuriously (0/0 in the limit).
-    // It stops at kStrongestSelected times the noise level's cut-off: the solve's iterations grow
-    // as 1 / mu^2, and the angle error gains little beyond (docs/quality.md).
-    step(20, "Cut-off by cross-validation");
-    CutoffSelectionOptions search;
-    search.mu_largest = kWeakestSearched * std::max(1.0, options.weaker_allowed) * noise_cutoff;
+    search.mu_largest = (by_risk ? kUnbiasedRiskRange : kWeakestSearched * std::max(1.0, options.weaker_allowed)) * noise_cutoff;
     search.mu_smallest = noise_cutoff / kStrongestSelected;
     search.first_order = options.first_order;
+    if (by_risk) search.noise_sigma = sigma;  // the positions are in mean edges
     CutoffSelection selection;
     if (!select_cutoff(adjacency, v, smoothed_vertex_normals(v, faces, adjacency), search, selection, error,
-                       [&](double done) { step(20 + static_cast<int>(10 * done), "Cut-off by cross-validation"); }))
+                       [&](double done) { step(20 + static_cast<int>(10 * done), stage); }))
       return false;
     const double chosen = selection.mu / options.selection_bias;
-    report.cutoff_selected = chosen < noise_cutoff;
-    report.mu = std::min(chosen, options.weaker_allowed * noise_cutoff) / std::sqrt(options.strength);
+    report.cutoff_by_risk = by_risk;
+    report.cutoff_selected = !by_risk && chosen < noise_cutoff;
+    report.mu = (by_risk ? chosen : std::min(chosen, options.weaker_allowed * noise_cutoff)) / std::sqrt(options.strength);
     report.selection_iterations = selection.iterations;
     report.selection_vertices = selection.sampled_vertices;
     clock.done("cut-off selection");

@@ -22,7 +22,8 @@ double median(std::vector<double> v) {
   return *mid;
 }
 
-// x with P(|N(0, 1)| <= x) = q, by bisection on erf (0.1257 for q = 0.1).
+}  // namespace
+
 double folded_normal_quantile(double q) {
   double low = 0, high = 10;
   for (int i = 0; i < 60; ++i) {
@@ -31,8 +32,6 @@ double folded_normal_quantile(double q) {
   }
   return 0.5 * (low + high);
 }
-
-}  // namespace
 
 bool may_be_surface_detail(const NoiseEstimate& estimate) {
   return !estimate.capped() && estimate.relative() >= kNoiseFree && estimate.relative() <= kCleanDetailReads;

@@ -74,6 +74,9 @@ constexpr double kImf1Share = 1.0;
 // noise-free reading, and not capped by flat hinges (a capped one read the noise itself).
 bool may_be_surface_detail(const NoiseEstimate& estimate);
 
+// x with P(|N(0, 1)| <= x) = q, by bisection on erf (0.1257 for q = 0.1).
+double folded_normal_quantile(double q);
+
 // Per-vertex height over the one-ring mean, along the normal (0 for vertices of no face).
 Eigen::VectorXd one_ring_heights(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency);
 
