@@ -205,7 +205,7 @@ bool apply(FilterRun& run) {
     run.log(QString("  crease contrast of the smoothed mesh %1 (below %2: no sharp creases)%3")
                 .arg(report.crease_contrast, 0, 'f', 1).arg(hht::kCreaseContrast)
                 .arg(!report.smoothed_instead ? ""
-                     : o.noise > 0 ? "; the result is the adaptive smoothing (cut-off by Stein's unbiased risk with the given noise)"
+                     : report.smoothed_by_risk ? "; the result is the adaptive smoothing (cut-off by Stein's unbiased risk with the given noise)"
                                    : "; the result is the adaptive smoothing (cross-validated cut-off)"));
   if (report.flat_parts_refined)
     run.log("  no sharp creases read, but the mesh has exactly flat parts (its noise estimate was capped by them): "

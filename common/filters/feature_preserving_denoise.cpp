@@ -246,6 +246,7 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
                                  [&](int percent, const char*) { step(40 + 59 * percent / 100, "No sharp creases: adaptive smoothing"); }))
         return false;
       report.smoothed_instead = true;
+      report.smoothed_by_risk = smoothing_report.cutoff_by_risk;
       clock.done("adaptive smoothing");
       if (options.detect_features && options.show_features && !detect_features(99)) return false;
       step(100, "Done");

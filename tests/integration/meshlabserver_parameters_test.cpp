@@ -486,22 +486,48 @@ TEST(MeshlabserverParameters, DenoiseSmoothsSurfacesWithoutCreases) {
 
 // A coarse CAD export that the noise-level smoothing distorts (rotor, 5% noise along the normals):
 // denoise.mlx refines it from the input (item 17), as the library does, and the log says why.
-TEST(MeshlabserverParameters, DenoiseRefinesADistortedCoarseExportFromItsInput) {
-  const Input in = read_input("rotor");
-  Positions noisy;
-  std::string input;
-  ASSERT_NO_FATAL_FAILURE(write_noisy("rotor", in, 5.0, NoiseDirection::Normal, 11, noisy, input));
+// A data mesh with noise (seed 11), written for meshlabserver, and the library's denoising of it.
+struct DenoisedInput {
+  Input in;
+  std::string path;
   Positions expected;
   DenoiseReport report;
+};
+
+void denoise_noisy(const char* mesh, double percent, NoiseDirection direction, const DenoiseOptions& options,
+                   DenoisedInput& out) {
+  out.in = read_input(mesh);
+  Positions noisy;
+  ASSERT_NO_FATAL_FAILURE(write_noisy(mesh, out.in, percent, direction, 11, noisy, out.path));
   std::string error;
-  ASSERT_TRUE(feature_preserving_denoise(noisy, in.faces, DenoiseOptions{}, expected, report, error)) << error;
-  EXPECT_TRUE(report.smoothing_distorts);
-  EXPECT_FALSE(report.untangled);
-  const ServerRun run = run_resource(input, "denoise.mlx", {}, "denoise_distorted");
-  expect_positions(saved_positions(run), expected, in.diagonal, "distorted");
+  ASSERT_TRUE(feature_preserving_denoise(noisy, out.in.faces, options, out.expected, out.report, error)) << error;
+}
+
+TEST(MeshlabserverParameters, DenoiseRefinesADistortedCoarseExportFromItsInput) {
+  DenoisedInput d;
+  ASSERT_NO_FATAL_FAILURE(denoise_noisy("rotor", 5.0, NoiseDirection::Normal, {}, d));
+  EXPECT_TRUE(d.report.smoothing_distorts);
+  EXPECT_FALSE(d.report.untangled);
+  const ServerRun run = run_resource(d.path, "denoise.mlx", {}, "denoise_distorted");
+  expect_positions(saved_positions(run), d.expected, d.in.diagonal, "distorted");
   EXPECT_NE(run.log.find("distorts features a few edges wide (a coarse CAD export); refined from the input"), std::string::npos)
       << run.log;
   EXPECT_NE(run.log.find("started from the input"), std::string::npos) << run.log;
+}
+
+// The user's noise level reaches the denoiser's adaptive smoothing (a surface without creases),
+// whose cut-off Stein's unbiased risk then chooses: the same result as the library, and the log says so.
+TEST(MeshlabserverParameters, DenoiseWithAGivenNoiseChoosesTheCutoffByUnbiasedRisk) {
+  DenoiseOptions o;
+  o.noise = f(2) / 100.0;
+  DenoisedInput d;
+  ASSERT_NO_FATAL_FAILURE(denoise_noisy("bull", 2.0, NoiseDirection::Isotropic, o, d));
+  EXPECT_TRUE(d.report.smoothed_instead);
+  EXPECT_TRUE(d.report.smoothed_by_risk);
+  const ServerRun run = run_resource(d.path, "denoise.mlx", {{"noisePercent", "2"}}, "denoise_given_noise");
+  expect_positions(saved_positions(run), d.expected, d.in.diagonal, "given noise");
+  EXPECT_NE(run.log.find("the adaptive smoothing (cut-off by Stein's unbiased risk with the given noise)"), std::string::npos)
+      << run.log;
 }
 
 // ------------------------------------------------------------------------------ compare
