@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <sstream>
 
 namespace hht {
 
@@ -54,7 +55,8 @@ bool reconstruct_positions(const Positions& positions, const Faces& faces, const
   }
   target *= scale;
 
-  const Sparse c = cotangent_matrix(faces, corner_cotangents(v, faces), static_cast<int>(n));
+  const Positions cotangents = corner_cotangents(v, faces);
+  const Sparse c = cotangent_matrix(faces, cotangents, static_cast<int>(n));
   // Areas in scaled units, floored so that vertices of no or degenerate faces stay solvable.
   Eigen::VectorXd area = curvature.areas / (scale * scale);
   const double floor = 1e-8 * std::max(area.mean(), 1e-300);
@@ -135,6 +137,16 @@ bool reconstruct_positions(const Positions& positions, const Faces& faces, const
     if (bound > max_error) {
       error = "conjugate gradients stopped with a possible position error of " + std::to_string(bound / diagonal) +
               " of the diagonal after " + std::to_string(it) + " iterations";
+      // The usual cause: needles, whose cotangent weights dwarf every other and leave the system
+      // near singular. A user can remove them; say so.
+      const Eigen::Index needles = (cotangents.array() > 1 / std::tan(kNeedleAngleDegrees * M_PI / 180)).rowwise().any().count();
+      if (needles > 0) {
+        std::ostringstream hint;
+        hint << "; the mesh has " << needles << " degenerate faces (an angle under " << kNeedleAngleDegrees
+             << " degrees: no area, as triangulated polygons often leave), where the cotangent Laplacian is undefined: "
+                "remove them first (Filters > Cleaning and Repairing > Remove Zero Area Faces, Remove T-Vertices)";
+        error += hint.str();
+      }
       return false;
     }
   }

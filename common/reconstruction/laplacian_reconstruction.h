@@ -23,6 +23,10 @@ namespace hht {
 
 enum class ReconstructionTarget { NormalOnly, KeepTangential };
 
+// A face with an angle under this is degenerate for the cotangent Laplacian (named in the
+// message when the solve fails).
+constexpr double kNeedleAngleDegrees = 0.01;
+
 struct ReconstructionOptions {
   double lambda = 0.01;  // weight of the original positions, relative to the mean edge length
   ReconstructionTarget target = ReconstructionTarget::KeepTangential;

@@ -207,6 +207,35 @@ TEST(SpectralMeshFilter, BadInputFailsWithAMessage) {
   EXPECT_NE(error.find("NaN"), std::string::npos);
 }
 
+// libcgal-demo's mpi.off holds polygons of up to ten sides; triangulated as MeshLab does, some of
+// them leave faces of no area, whose cotangent weights make the rebuild's system near singular.
+// The enhancement fails there, and its message names the cause the user can remove.
+TEST(SpectralMeshFilter, NamesTheDegenerateFacesThatStallTheRebuild) {
+  test::ArrayMesh m = test::sphere(3);
+  // Faces of no area: a few vertices moved onto the midpoints of an opposite edge.
+  for (Eigen::Index f : {0, 40, 80, 120, 160, 200}) {
+    const int c = m.faces(f, 2);
+    m.positions.row(c) = 0.5 * (m.positions.row(m.faces(f, 0)) + m.positions.row(m.faces(f, 1)));
+  }
+  SpectralMeshFilterOptions o;  // enhance.mlx
+  o.gain = 2;
+  o.reconstruction.lambda = 0.1;
+  Positions r;
+  SpectralMeshFilterReport report;
+  std::string error;
+  ASSERT_FALSE(spectral_mesh_filter(m.positions, m.faces, o, r, report, error));
+  EXPECT_NE(error.find("conjugate gradients stopped"), std::string::npos) << error;
+  EXPECT_NE(error.find("degenerate faces"), std::string::npos) << error;
+  EXPECT_NE(error.find("Remove Zero Area Faces"), std::string::npos) << error;
+  // A well-shaped mesh whose solve stalls (too few iterations allowed) gets no such hint.
+  const test::ArrayMesh sphere = test::sphere(3);
+  o.reconstruction.max_iterations = 1;
+  o.reconstruction.max_error = 1e-14;
+  ASSERT_FALSE(spectral_mesh_filter(sphere.positions, sphere.faces, o, r, report, error));
+  EXPECT_NE(error.find("conjugate gradients stopped"), std::string::npos) << error;
+  EXPECT_EQ(error.find("degenerate faces"), std::string::npos) << error;
+}
+
 TEST(GaussianNoise, MeasuredSigmaMatchesTheRequest) {
   const test::ArrayMesh m = test::load_data_mesh("fandisk");
   const double edge = mean_edge_length(m.positions, m.faces);
