@@ -1441,6 +1441,21 @@ int main(int argc, char** argv) {
     const int out_folded = static_cast<int>(std::count(folded_out.begin(), folded_out.end(), 1));
     std::printf("  item 17: smoothing move %.3f noise RMS, folded %.4f, distorts %d; result folded %.4f\n", r.smoothing_move,
                 double(r.folded_faces) / f.rows(), int(r.smoothing_distorts), double(out_folded) / f.rows());
+    {  // how white the removed part is: its correlation across edges (normal part, and 3D)
+      const VertexAdjacency adj = vertex_adjacency(f, n);
+      const Positions nn = area_weighted_vertex_normals(out, f);
+      double cn = 0, sn = 0, c3 = 0, s3 = 0;
+      for (int i = 0; i < n; ++i)
+        for (const int* j = adj.begin(i); j != adj.end(i); ++j) {
+          if (*j < i) continue;
+          const Eigen::RowVector3d ri = noisy.row(i) - out.row(i), rj = noisy.row(*j) - out.row(*j);
+          const double a = ri.dot(nn.row(i)), b = rj.dot(nn.row(*j));
+          cn += a * b; sn += 0.5 * (a * a + b * b);
+          c3 += ri.dot(rj); s3 += 0.5 * (ri.squaredNorm() + rj.squaredNorm());
+        }
+      std::printf("  removed part's edge correlation: normal %.3f, 3D %.3f; removed RMS %.3f sigma\n", cn / sn, c3 / s3,
+                  std::sqrt((noisy - out).rowwise().squaredNorm().mean()) / (r.sigma_used * h));
+    }
     std::printf("  crease contrast %.2f (input %.2f); estimate imf %.4f hinge %.4f capped %d\n", r.crease_contrast, crease_contrast(noisy, f), r.noise.imf_sigma / std::max(1e-300, r.noise.mean_edge), r.noise.hinge_sigma / std::max(1e-300, r.noise.mean_edge), int(r.noise.capped()));
     std::printf("  steps");
     for (double st : r.refine_steps) std::printf(" %.3f", st);
@@ -1694,6 +1709,56 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "L") {  // oracle: which loss of the normal error tracks E_a over the strengths
+    std::string err;
+    const VertexAdjacency adj = vertex_adjacency(f, n);
+    // breadth-first patches of about 100 vertices
+    std::vector<int> patch(n, -1);
+    int patches = 0;
+    for (int s0 = 0; s0 < n; ++s0) {
+      if (patch[s0] >= 0) continue;
+      std::vector<int> q{s0};
+      patch[s0] = patches;
+      for (size_t k = 0; k < q.size() && q.size() < 100; ++k)
+        for (const int* it = adj.begin(q[k]); it != adj.end(q[k]); ++it)
+          if (patch[*it] < 0 && q.size() < 100) { patch[*it] = patches; q.push_back(*it); }
+      ++patches;
+    }
+    for (double strength : {0.25, 0.35, 0.5, 0.7, 1.0, 1.4, 2.0, 2.8, 4.0, 5.6}) {
+      NoiseAdaptiveSmoothingOptions o = lab_options();
+      o.select_cutoff = false;
+      o.strength = strength;
+      Positions out;
+      NoiseAdaptiveSmoothingReport r;
+      if (!noise_adaptive_smooth(noisy, f, o, out, r, err)) return 1;
+      const Positions nn = area_weighted_vertex_normals(out, f);
+      std::vector<double> e(n);
+      for (int i = 0; i < n; ++i) e[i] = (out.row(i) - clean.row(i)).dot(nn.row(i)) / h;
+      double l2 = 0, l1 = 0, v2 = 0, v1 = 0, wn2 = 0, w32 = 0, w31 = 0;
+      std::vector<double> p2(patches, 0);
+      for (int i = 0; i < n; ++i) {
+        v2 += e[i] * e[i];
+        v1 += std::abs(e[i]);
+        for (const int* it = adj.begin(i); it != adj.end(i); ++it)
+          if (const int j = *it; j > i) {
+            const double d = e[i] - e[j];
+            l2 += d * d;
+            l1 += std::abs(d);
+            p2[patch[i]] += d * d;
+            const double len2 = (clean.row(i) - clean.row(j)).squaredNorm() / (h * h);
+            wn2 += d * d / len2;
+            const double d3 = ((out.row(i) - clean.row(i)) - (out.row(j) - clean.row(j))).squaredNorm() / (h * h);
+            w32 += d3 / len2;
+            w31 += std::sqrt(d3 / len2);
+          }
+      }
+      double psq = 0;
+      for (double x : p2) psq += std::sqrt(x);
+      const Score sc = score(out, clean, f);
+      std::printf("  L s%.2f E_a %.3f rms %.2f edgeL2 %.4g edgeL1 %.4g patchsqrt %.4g vertL2 %.4g vertL1 %.4g wn2 %.4g w32 %.4g w31 %.4g\n", strength, sc.ea, sc.rms, l2, l1, psq, v2, v1, wn2, w32, w31);
+    }
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "a") {
     std::string err;
     std::vector<double> strengths{1.0};
@@ -1708,12 +1773,43 @@ int main(int argc, char** argv) {
       for (double strength : strengths) {
         NoiseAdaptiveSmoothingOptions o = lab_options();
         o.strength = strength;
+        if (std::getenv("LAB_SUREEST")) {  // Stein's risk with the estimated noise
+          o.noise = estimated_sigma(noisy, f);
+          o.unbiased_risk = true;
+        }
         Positions out;
         NoiseAdaptiveSmoothingReport r;
         if (!noise_adaptive_smooth(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); return 1; }
         char name[64];
         std::snprintf(name, sizeof name, "NAS s%.2f mu %.3f%s (%.3f)", strength, r.mu, r.cutoff_selected ? "*" : "", r.sigma_used);
         show(name, out);
+        if (std::getenv("LAB_QUANT")) {  // where the angle error lives: quantiles, and by face size
+          const Positions tb = taubin(noisy, f, 10, 0.5, -0.53);
+          const Positions nc = face_normals(clean, f);
+          std::vector<double> area(f.rows());
+          for (Eigen::Index i = 0; i < f.rows(); ++i)
+            area[i] = (clean.row(f(i, 1)) - clean.row(f(i, 0))).cross(clean.row(f(i, 2)) - clean.row(f(i, 0))).norm();
+          std::vector<double> sorted_area = area;
+          std::sort(sorted_area.begin(), sorted_area.end());
+          const double small = sorted_area[sorted_area.size() / 4], large = sorted_area[3 * sorted_area.size() / 4];
+          for (const auto& [label, p] : {std::pair<const char*, const Positions*>{"taubin10", &tb}, {"NAS", &out}}) {
+            const Positions np = face_normals(*p, f);
+            std::vector<double> e(f.rows());
+            double s_small = 0, s_mid = 0, s_large = 0, big = 0;
+            for (Eigen::Index i = 0; i < f.rows(); ++i) {
+              e[i] = std::acos(std::clamp(np.row(i).dot(nc.row(i)), -1.0, 1.0)) * 180 / M_PI;
+              (area[i] <= small ? s_small : area[i] >= large ? s_large : s_mid) += e[i];
+              if (e[i] > 30) big += e[i];
+            }
+            double total = 0;
+            for (double x : e) total += x;
+            std::vector<double> q = e;
+            std::sort(q.begin(), q.end());
+            auto at = [&](double t) { return q[static_cast<size_t>(t * (q.size() - 1))]; };
+            std::printf("    %-9s mean %.2f q50 %.2f q75 %.2f q90 %.2f q99 %.2f | above 30 deg: %.2f of the mean | smallest quarter %.2f, middle %.2f, largest quarter %.2f\n",
+                        label, total / e.size(), at(0.5), at(0.75), at(0.9), at(0.99), big / e.size(), s_small / e.size(), s_mid / e.size(), s_large / e.size());
+          }
+        }
         // how much was removed along the result's normals, against the noise estimate
         const Positions nn = area_weighted_vertex_normals(out, f);
         double normal2 = 0, all2 = 0;
