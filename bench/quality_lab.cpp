@@ -136,6 +136,24 @@ std::vector<std::vector<int>> adjacency(const Faces& f, int n) {
 
 // Each vertex of `base` moved along base's normal onto a weighted quadric fitted to the
 // `data` positions of its k-ring.
+// Patches grown breadth-first from the lowest unassigned vertex, `size` vertices at most each:
+// each vertex's patch index; `count` gets their number.
+std::vector<int> breadth_first_patches(const std::vector<std::vector<int>>& adj, int size, int& count) {
+  const int n = static_cast<int>(adj.size());
+  std::vector<int> patch(n, -1);
+  count = 0;
+  for (int seed = 0; seed < n; ++seed) {
+    if (patch[seed] >= 0) continue;
+    std::vector<int> queue{seed};
+    patch[seed] = count;
+    for (size_t head = 0; head < queue.size() && int(queue.size()) < size; ++head)
+      for (int j : adj[queue[head]])
+        if (patch[j] < 0 && int(queue.size()) < size) { patch[j] = count; queue.push_back(j); }
+    ++count;
+  }
+  return patch;
+}
+
 Positions quadric_projection(const Positions& base, const Positions& data, const Faces& f, int rings, double width) {
   const int n = base.rows();
   auto adj = adjacency(f, n);
@@ -924,17 +942,8 @@ int main(int argc, char** argv) {
     const Positions normals = area_weighted_vertex_normals(xs[4], f);
     const auto adj = adjacency(f, n);
     const int patch_size = std::getenv("LAB_PATCH") ? std::atoi(std::getenv("LAB_PATCH")) : 400;
-    std::vector<int> patch(n, -1);
     int patches = 0;
-    for (int seed = 0; seed < n; ++seed) {
-      if (patch[seed] >= 0) continue;
-      std::vector<int> queue{seed};
-      patch[seed] = patches;
-      for (size_t head = 0; head < queue.size() && int(queue.size()) < patch_size; ++head)
-        for (int j : adj[queue[head]])
-          if (patch[j] < 0 && int(queue.size()) < patch_size) { patch[j] = patches; queue.push_back(j); }
-      ++patches;
-    }
+    const std::vector<int> patch = breadth_first_patches(adj, patch_size, patches);
     // per patch and strength: GCV score parts and true E_a sums
     std::vector<std::vector<double>> d(patches, std::vector<double>(S, 0)), tka(patches, std::vector<double>(S, 0)),
         ea(patches, std::vector<double>(S, 0));
@@ -1712,18 +1721,8 @@ int main(int argc, char** argv) {
   if (argc > 3 && std::string(argv[3]) == "L") {  // oracle: which loss of the normal error tracks E_a over the strengths
     std::string err;
     const VertexAdjacency adj = vertex_adjacency(f, n);
-    // breadth-first patches of about 100 vertices
-    std::vector<int> patch(n, -1);
     int patches = 0;
-    for (int s0 = 0; s0 < n; ++s0) {
-      if (patch[s0] >= 0) continue;
-      std::vector<int> q{s0};
-      patch[s0] = patches;
-      for (size_t k = 0; k < q.size() && q.size() < 100; ++k)
-        for (const int* it = adj.begin(q[k]); it != adj.end(q[k]); ++it)
-          if (patch[*it] < 0 && q.size() < 100) { patch[*it] = patches; q.push_back(*it); }
-      ++patches;
-    }
+    const std::vector<int> patch = breadth_first_patches(adjacency(f, n), 100, patches);
     for (double strength : {0.25, 0.35, 0.5, 0.7, 1.0, 1.4, 2.0, 2.8, 4.0, 5.6}) {
       NoiseAdaptiveSmoothingOptions o = lab_options();
       o.select_cutoff = false;
