@@ -1469,6 +1469,35 @@ int main(int argc, char** argv) {
     std::printf("  steps");
     for (double st : r.refine_steps) std::printf(" %.3f", st);
     std::printf("\n");
+    {  // planar share: faces in regions (grown over shared edges) whose normals stay within 3 degrees of their seed's
+      const Positions fn = face_normals(out, f);
+      std::map<std::pair<int, int>, std::vector<int>> by_edge;
+      for (Eigen::Index g = 0; g < f.rows(); ++g)
+        for (int k = 0; k < 3; ++k) {
+          const int a = f(g, k), b = f(g, (k + 1) % 3);
+          by_edge[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(g));
+        }
+      std::vector<std::vector<int>> nb(f.rows());
+      for (const auto& [e, fs] : by_edge)
+        if (fs.size() == 2) { nb[fs[0]].push_back(fs[1]); nb[fs[1]].push_back(fs[0]); }
+      for (double deg : {2.0, 3.0, 5.0}) {
+        const double c = std::cos(deg * M_PI / 180);
+        std::vector<int> region(f.rows(), -1);
+        int regions = 0;
+        long in_large = 0;
+        for (Eigen::Index s0 = 0; s0 < f.rows(); ++s0) {
+          if (region[s0] >= 0) continue;
+          std::vector<int> q{static_cast<int>(s0)};
+          region[s0] = regions;
+          for (size_t k = 0; k < q.size(); ++k)
+            for (int g : nb[q[k]])
+              if (region[g] < 0 && fn.row(g).dot(fn.row(s0)) > c) { region[g] = regions; q.push_back(g); }
+          if (q.size() >= 30) in_large += q.size();
+          ++regions;
+        }
+        std::printf("  planar share (%.0f deg, regions of 30+ faces): %.3f\n", deg, double(in_large) / f.rows());
+      }
+    }
     if (const char* x = std::getenv("LAB_SMOOTHOWN")) {  // experiment: own-normal rounds after the smoothing route
       GuidedNormalDenoiseOptions b;
       b.guidance = NormalGuidance::OwnNormal;
@@ -1782,6 +1811,24 @@ int main(int argc, char** argv) {
         char name[64];
         std::snprintf(name, sizeof name, "NAS s%.2f mu %.3f%s (%.3f)", strength, r.mu, r.cutoff_selected ? "*" : "", r.sigma_used);
         show(name, out);
+        if (std::getenv("LAB_TURNED")) {  // the faces left turned against the input: their tilts from the result's surface
+          const Positions sn = area_weighted_vertex_normals(out, f), in_n = face_normals(noisy, f), out_n = face_normals(out, f);
+          const Positions in_vn = area_weighted_vertex_normals(noisy, f);
+          std::vector<std::pair<double, double>> tilts;
+          for (Eigen::Index g = 0; g < f.rows(); ++g) {
+            const Eigen::RowVector3d around_in = in_vn.row(f(g, 0)) + in_vn.row(f(g, 1)) + in_vn.row(f(g, 2));
+            if (in_n.row(g).dot(out_n.row(g)) >= 0 || in_n.row(g).dot(around_in) < 0) continue;
+            const Eigen::RowVector3d s_ = (sn.row(f(g, 0)) + sn.row(f(g, 1)) + sn.row(f(g, 2))).normalized();
+            tilts.push_back({std::acos(std::clamp(in_n.row(g).dot(s_), -1.0, 1.0)) * 180 / M_PI,
+                             std::acos(std::clamp(out_n.row(g).dot(s_), -1.0, 1.0)) * 180 / M_PI});
+          }
+          std::sort(tilts.begin(), tilts.end(), [](auto a, auto b) { return a.second < b.second; });
+          std::printf("    turned %zu (%.3f%%): (input tilt, output tilt)", tilts.size(), 100.0 * tilts.size() / f.rows());
+          for (size_t k = 0; k < tilts.size(); k += std::max<size_t>(1, tilts.size() / 12)) std::printf(" (%.0f,%.0f)", tilts[k].first, tilts[k].second);
+          int out_over_20 = 0;
+          for (auto t : tilts) out_over_20 += t.second > 20;
+          std::printf(" | output tilt > 20: %d\n", out_over_20);
+        }
         if (std::getenv("LAB_QUANT")) {  // where the angle error lives: quantiles, and by face size
           const Positions tb = taubin(noisy, f, 10, 0.5, -0.53);
           const Positions nc = face_normals(clean, f);
