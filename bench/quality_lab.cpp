@@ -1469,6 +1469,16 @@ int main(int argc, char** argv) {
     std::printf("  steps");
     for (double st : r.refine_steps) std::printf(" %.3f", st);
     std::printf("\n");
+    {  // the result's dihedral angles: high percentiles and the share of sharp edges
+      std::vector<double> d;
+      for (const auto& a : dihedral_angles(out, f)) d.push_back(a.radians * 180 / M_PI);
+      std::sort(d.begin(), d.end());
+      auto at = [&](double q) { return d[static_cast<size_t>(q * (d.size() - 1))]; };
+      int over30 = 0, over45 = 0, over60 = 0;
+      for (double x : d) { over30 += x > 30; over45 += x > 45; over60 += x > 60; }
+      std::printf("  dihedral: median %.2f p98 %.1f p99 %.1f p99.5 %.1f p99.9 %.1f; share over 30/45/60: %.4f %.4f %.4f\n", at(0.5), at(0.98), at(0.99), at(0.995), at(0.999),
+                  double(over30) / d.size(), double(over45) / d.size(), double(over60) / d.size());
+    }
     {  // planar share: faces in regions (grown over shared edges) whose normals stay within 3 degrees of their seed's
       const Positions fn = face_normals(out, f);
       std::map<std::pair<int, int>, std::vector<int>> by_edge;
