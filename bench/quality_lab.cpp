@@ -294,6 +294,7 @@ NoiseAdaptiveSmoothingOptions lab_options() {
   if (const char* b = std::getenv("LAB_CVBIAS")) o.selection_bias = std::atof(b);
   if (const char* x = std::getenv("LAB_GIVEN")) o.noise = std::atof(x);  // the noise given (sigma / mean edge)
   if (std::getenv("LAB_SURE")) o.unbiased_risk = true;  // with LAB_GIVEN: the cut-off by Stein's risk
+  if (const char* x = std::getenv("LAB_STRONGEST")) o.strongest_selected = std::atof(x);
   return o;
 }
 
@@ -1469,6 +1470,34 @@ int main(int argc, char** argv) {
     std::printf("  steps");
     for (double st : r.refine_steps) std::printf(" %.3f", st);
     std::printf("\n");
+    if (std::getenv("LAB_BOUNDARY")) {  // the angle error on faces near the boundary (within 2 rings) and elsewhere
+      const VertexAdjacency adj = vertex_adjacency(f, n);
+      std::vector<int> ring(n, 99);
+      std::vector<int> q;
+      for (int i = 0; i < n; ++i) if (adj.boundary[i]) { ring[i] = 0; q.push_back(i); }
+      for (size_t k = 0; k < q.size(); ++k)
+        for (const int* j = adj.begin(q[k]); j != adj.end(q[k]); ++j)
+          if (ring[*j] > ring[q[k]] + 1) { ring[*j] = ring[q[k]] + 1; q.push_back(*j); }
+      const Positions a = face_normals(out, f), b = face_normals(clean, f);
+      double near = 0, far = 0;
+      int nn = 0, nf = 0;
+      for (Eigen::Index g = 0; g < f.rows(); ++g) {
+        const double e = std::acos(std::clamp(a.row(g).dot(b.row(g)), -1.0, 1.0)) * 180 / M_PI;
+        if (std::min({ring[f(g, 0)], ring[f(g, 1)], ring[f(g, 2)]}) <= 2) { near += e; ++nn; } else { far += e; ++nf; }
+      }
+      std::printf("  E_a near the boundary (2 rings, %d faces) %.2f, elsewhere (%d) %.2f; share of the sum near it %.2f\n", nn, nn ? near / nn : 0.0, nf, nf ? far / nf : 0.0, near / std::max(1e-300, near + far));
+    }
+    if (std::getenv("LAB_FEATURES")) {  // sharp feature vertices off the boundary, on the input and on the result
+      const VertexAdjacency adj = vertex_adjacency(f, n);
+      for (const auto& [label, p] : {std::pair<const char*, const Positions*>{"input", &noisy}, {"result", &out}}) {
+        std::vector<FeatureType> type;
+        std::string e2;
+        if (!detect_sharp_features(*p, f, SharpFeatureOptions{}, type, e2)) { std::printf("  features: %s\n", e2.c_str()); continue; }
+        int inner = 0;
+        for (int i = 0; i < n; ++i) inner += type[i] != FeatureType::None && !adj.boundary[i];
+        std::printf("  feature vertices off the boundary (%s): %d (%.4f)\n", label, inner, double(inner) / n);
+      }
+    }
     {  // the result's dihedral angles: high percentiles and the share of sharp edges
       std::vector<double> d;
       for (const auto& a : dihedral_angles(out, f)) d.push_back(a.radians * 180 / M_PI);

@@ -137,15 +137,15 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
   // smooths less than the mean angle error wants on coarse detailed meshes: it may only make the
   // filter stronger than the noise level's (docs/quality.md). Its search starts a little weaker
   // than that cut-off: nearer the identity its score falls again, spuriously (0/0 in the limit).
-  // Both stop at kStrongestSelected times the noise level's cut-off: the solve's iterations grow
-  // as 1 / mu^2, and the angle error gains little beyond (docs/quality.md).
+  // Both stop at kStrongestSelected times the noise level's cut-off: simple smooth surfaces want
+  // far stronger filters (docs/quality.md item 19), but the solve's iterations grow as 1 / mu^2.
   const bool by_risk = !(options.mu > 0) && options.unbiased_risk && options.noise > 0;
   if (by_risk || (!(options.mu > 0) && options.select_cutoff)) {
     const char* stage = by_risk ? "Cut-off by Stein's unbiased risk" : "Cut-off by cross-validation";
     step(20, stage);
     CutoffSelectionOptions search;
     search.mu_largest = (by_risk ? kUnbiasedRiskRange : kWeakestSearched * std::max(1.0, options.weaker_allowed)) * noise_cutoff;
-    search.mu_smallest = noise_cutoff / kStrongestSelected;
+    search.mu_smallest = noise_cutoff / options.strongest_selected;
     search.first_order = options.first_order;
     if (by_risk) search.noise_sigma = sigma;  // the positions are in mean edges
     CutoffSelection selection;

@@ -68,16 +68,18 @@ constexpr double kRestoredFaceTilt = 60.0;
 // have 0.02-0.08% (cow, femur, bull, man), at 10% noise 0.28-1.1% (docs/quality.md item 13).
 constexpr double kWrinkleShare = 0.0015;
 // With the noise given, Stein's risk is searched from kUnbiasedRiskRange times weaker than the noise
-// law's cut-off to kStrongestSelected times stronger (the solve's iterations grow as 1 / mu^2: on
-// the 1.66M-vertex armadillo at 20%, 4 times stronger took a 65 s solve, 2 times 16 s).
+// law's cut-off to kStrongestSelected times stronger.
 constexpr double kUnbiasedRiskRange = 4.0;
 // The cross-validated cut-off is divided by this: its squared risk has its minimum at a weaker
 // filter than the mean angle error's (docs/quality.md items 5 and 10).
 constexpr double kSelectionBias = 1.2;
 // The weakest cut-off the cross-validation scores, relative to the noise level's (docs/quality.md).
 constexpr double kWeakestSearched = 1.5;
-// The strongest: the noise level's cut-off divided by this.
-constexpr double kStrongestSelected = 2.0;
+// The strongest: the noise level's cut-off divided by this. Simple smooth surfaces take far
+// stronger filters than the law's (mech-holes-shark, a cylinder: docs/quality.md item 19); the
+// cost is the solve's, whose iterations grow as 1 / mu^2 (1.66M-vertex armadillo at 20%: 19 s
+// through meshlabserver with 2, 34 s with 3, 62 s with 4; docs/benchmarks.md).
+constexpr double kStrongestSelected = 3.0;
 // The solve stops once no vertex can be further than this, relative to the bounding-box
 // diagonal, from the exact least-squares solution (a proven bound: biharmonic_low_pass.h).
 constexpr double kSmoothingMaxError = 1e-5;
@@ -91,13 +93,15 @@ struct NoiseAdaptiveSmoothingOptions {
   bool unturn_wrinkles = true;  // step 7 (the denoiser's untangling counts the smoothing's own turns)
   // Experiments (bench/quality_lab, docs/quality.md items 8-10): the tangential cap's factor
   // (infinity: no cap), the noise law's scale, how much weaker than the noise law's cut-off the
-  // cross-validation may choose, the low-pass's first-order weight (0: second order only), and
-  // the bias applied to the cross-validated cut-off (1: none).
+  // cross-validation may choose, the low-pass's first-order weight (0: second order only), the
+  // bias applied to the cross-validated cut-off (1: none), and how much stronger than the noise
+  // law's cut-off either search may go (item 19).
   double tangential_cap = kTangentialCap;
   double mu_scale = kMuScale;
   double weaker_allowed = 1;
   double first_order = kFirstOrder;
   double selection_bias = kSelectionBias;
+  double strongest_selected = kStrongestSelected;
   CycleOptions cycle;
   EmdOptions emd;
 };
