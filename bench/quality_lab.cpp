@@ -1868,6 +1868,21 @@ int main(int argc, char** argv) {
           for (auto t : tilts) out_over_20 += t.second > 20;
           std::printf(" | output tilt > 20: %d\n", out_over_20);
         }
+        if (std::getenv("LAB_SPLIT")) {  // the RMS error's parts along the clean normals and across them
+          const Positions cn = area_weighted_vertex_normals(clean, f);
+          const Positions tb = taubin(noisy, f, 10, 0.5, -0.53);
+          const double diag = (clean.colwise().maxCoeff() - clean.colwise().minCoeff()).norm();
+          for (const auto& [label, p] : {std::pair<const char*, const Positions*>{"noisy", &noisy}, {"taubin10", &tb}, {"NAS", &out}}) {
+            double nn2 = 0, tt2 = 0;
+            for (int i = 0; i < n; ++i) {
+              const Eigen::RowVector3d e = p->row(i) - clean.row(i);
+              const double a = e.dot(cn.row(i).normalized());
+              nn2 += a * a;
+              tt2 += e.squaredNorm() - a * a;
+            }
+            std::printf("    %-9s RMS along the normals %.1f, across %.1f (1e-4 diag)\n", label, 1e4 * std::sqrt(nn2 / n) / diag, 1e4 * std::sqrt(tt2 / n) / diag);
+          }
+        }
         if (std::getenv("LAB_QUANT")) {  // where the angle error lives: quantiles, and by face size
           const Positions tb = taubin(noisy, f, 10, 0.5, -0.53);
           const Positions nc = face_normals(clean, f);
