@@ -405,6 +405,8 @@ int main(int argc, char** argv) {
   const bool along_normals = argc > 4 && std::string(argv[4]) == "normal";
   if (along_normals) {
     noisy = add_gaussian_noise(clean, f, 100 * level, NoiseDirection::Normal, std::getenv("LAB_SEED") ? std::atoi(std::getenv("LAB_SEED")) : 11);
+  } else if (argc > 4 && std::string(argv[4]) == "random") {  // the paper's model: a random direction per vertex
+    noisy = add_gaussian_noise(clean, f, 100 * level, NoiseDirection::Random, std::getenv("LAB_SEED") ? std::atoi(std::getenv("LAB_SEED")) : 11);
   } else {
     for (int i = 0; i < n; ++i)
       for (int k = 0; k < 3; ++k) noisy(i, k) += g(rng);
