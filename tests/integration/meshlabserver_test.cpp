@@ -8,10 +8,13 @@
 #include <wrap/io_trimesh/export_ply.h>
 #include <wrap/io_trimesh/import_off.h>
 
+#include <array>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <vector>
 
 namespace hht::test {
 namespace {
@@ -132,6 +135,37 @@ const std::string kMoebiusOff = [] {
 }();
 const BadInput kMoebius{"moebius", kMoebiusOff.c_str(), "not orientable"};
 
+// A bumpy grid with six faces of no area (a vertex moved onto the midpoint of its face's opposite
+// edge, as triangulated polygons leave them): the spectral filter's rebuild stalls on their
+// cotangent weights, and the message names them and the cleaning filters that remove them.
+const std::string kDegenerateOff = [] {
+  const int n = 16;
+  std::vector<std::array<double, 3>> v;
+  std::vector<std::array<int, 3>> f;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const double x = 4.0 * i / (n - 1), y = 4.0 * j / (n - 1);
+      v.push_back({x, y, 0.3 * std::sin(x) * std::cos(y)});
+    }
+  for (int j = 0; j + 1 < n; ++j)
+    for (int i = 0; i + 1 < n; ++i) {
+      const int a = j * n + i;
+      f.push_back({a, a + 1, a + n + 1});
+      f.push_back({a, a + n + 1, a + n});
+    }
+  for (int k : {40, 90, 140, 200, 260, 330})
+    for (int c = 0; c < 3; ++c) v[f[k][2]][c] = 0.5 * (v[f[k][0]][c] + v[f[k][1]][c]);
+  std::ostringstream off;
+  off.precision(17);
+  off << "OFF\n" << v.size() << " " << f.size() << " 0\n";
+  for (const auto& p : v) off << p[0] << " " << p[1] << " " << p[2] << "\n";
+  for (const auto& t : f) off << "3 " << t[0] << " " << t[1] << " " << t[2] << "\n";
+  return off.str();
+}();
+const BadInput kDegenerate{"degenerate", kDegenerateOff.c_str(), "6 degenerate faces"};
+
+INSTANTIATE_TEST_SUITE_P(Rebuild, MeshlabserverBadInput,
+                         ::testing::Combine(::testing::Values(kDegenerate), ::testing::Values("enhance.mlx")));
 INSTANTIATE_TEST_SUITE_P(Cycle, MeshlabserverBadInput,
                          ::testing::Combine(::testing::Values(kCloud, kFin, kNaN, kMoebius),
                                             ::testing::Values("hamiltonian_cycle.mlx")));

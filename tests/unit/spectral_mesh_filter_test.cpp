@@ -207,9 +207,10 @@ TEST(SpectralMeshFilter, BadInputFailsWithAMessage) {
   EXPECT_NE(error.find("NaN"), std::string::npos);
 }
 
-// libcgal-demo's mpi.off holds polygons of up to ten sides; triangulated as MeshLab does, some of
-// them leave faces of no area, whose cotangent weights make the rebuild's system near singular.
-// The enhancement fails there, and its message names the cause the user can remove.
+// Faces of no area (libcgal-demo's mpi.off, polygons of up to ten sides, leaves six once MeshLab
+// triangulates it; here a sphere with six made so) give cotangent weights that make the rebuild's
+// system near singular. The enhancement fails there, and its message names the cause the user can
+// remove.
 TEST(SpectralMeshFilter, NamesTheDegenerateFacesThatStallTheRebuild) {
   test::ArrayMesh m = test::sphere(3);
   // Faces of no area: a few vertices moved onto the midpoints of an opposite edge.
