@@ -1,5 +1,6 @@
 #include "reconstruction/cutoff_selection.h"
 
+#include "mesh/breadth_first_patches.h"
 #include "reconstruction/biharmonic_low_pass.h"
 
 #include <algorithm>
@@ -8,48 +9,6 @@
 #include <string>
 
 namespace hht {
-
-namespace {
-
-// Breadth-first patches grown from seeds spread evenly over the vertex order, `budget` vertices
-// in all; `kept` lists the original indices of the sampled vertices.
-VertexAdjacency sampled_patches(const VertexAdjacency& adjacency, int budget, int patches, std::vector<int>& kept) {
-  const int n = adjacency.vertices();
-  std::vector<int> index(n, -1);
-  kept.clear();
-  const int per_patch = std::max(1, budget / patches);
-  for (int p = 0; p < patches; ++p) {
-    const int seed = static_cast<int>((static_cast<int64_t>(n) * p) / patches);
-    if (index[seed] >= 0) continue;
-    const size_t start = kept.size();
-    index[seed] = static_cast<int>(kept.size());
-    kept.push_back(seed);
-    for (size_t head = start; head < kept.size() && kept.size() - start < static_cast<size_t>(per_patch); ++head)
-      for (const int* j = adjacency.begin(kept[head]); j != adjacency.end(kept[head]); ++j)
-        if (index[*j] < 0 && kept.size() - start < static_cast<size_t>(per_patch)) {
-          index[*j] = static_cast<int>(kept.size());
-          kept.push_back(*j);
-        }
-  }
-  VertexAdjacency out;
-  out.offsets.assign(kept.size() + 1, 0);
-  out.boundary.assign(kept.size(), 0);
-  for (size_t i = 0; i < kept.size(); ++i) {
-    for (const int* j = adjacency.begin(kept[i]); j != adjacency.end(kept[i]); ++j)
-      if (index[*j] >= 0) out.neighbours.push_back(index[*j]);
-    std::sort(out.neighbours.begin() + out.offsets[i], out.neighbours.end());
-    out.offsets[i + 1] = static_cast<int>(out.neighbours.size());
-  }
-  return out;
-}
-
-Positions rows_of(const Positions& all, const std::vector<int>& kept) {
-  Positions out(kept.size(), 3);
-  for (size_t i = 0; i < kept.size(); ++i) out.row(i) = all.row(kept[i]);
-  return out;
-}
-
-}  // namespace
 
 bool select_cutoff(const VertexAdjacency& full_adjacency, const Positions& full_positions, const Positions& full_normals,
                    const CutoffSelectionOptions& options, CutoffSelection& selection, std::string& error,
@@ -60,9 +19,10 @@ bool select_cutoff(const VertexAdjacency& full_adjacency, const Positions& full_
   VertexAdjacency sampled_adjacency;
   Positions sampled_positions, sampled_normals;
   if (sample) {
-    sampled_adjacency = sampled_patches(full_adjacency, options.sample_vertices, options.patches, kept);
-    sampled_positions = rows_of(full_positions, kept);
-    sampled_normals = rows_of(full_normals, kept);
+    kept = breadth_first_patches(full_adjacency, options.sample_vertices, options.patches);
+    sampled_adjacency = adjacency_among(full_adjacency, kept);
+    sampled_positions = rows_at(full_positions, kept);
+    sampled_normals = rows_at(full_normals, kept);
   }
   const VertexAdjacency& adjacency = sample ? sampled_adjacency : full_adjacency;
   const Positions& v = sample ? sampled_positions : full_positions;
