@@ -1,0 +1,62 @@
+#include "evaluation/gaussian_noise.h"
+#include "mesh/uniform_laplacian.h"
+#include "mesh/vertex_adjacency.h"
+#include "reconstruction/recorrupted_risk.h"
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+
+namespace hht {
+namespace {
+
+// Five steps of the umbrella operator: a filter that removes most of the noise of a fine sphere.
+Positions laplacian_smoothing(Positions p, const Faces& f) {
+  const Eigen::SparseMatrix<double> l = uniform_laplacian(vertex_adjacency(f, static_cast<int>(p.rows())));
+  for (int s = 0; s < 5; ++s) p -= 0.5 * Positions(l * p);
+  return p;
+}
+
+double mean_squared_error(const Positions& a, const Positions& b) {
+  return (a - b).squaredNorm() / static_cast<double>(a.rows());
+}
+
+// The risks differ as the true errors do, and by about as much: each is the true error at the
+// copy's noise plus the same constant. Comparing with the noisy data itself (y2 = y) would call
+// the identity the better procedure.
+TEST(RecorruptedRisk, RanksProceduresAsTheirTrueErrorsDo) {
+  const test::ArrayMesh s = test::sphere(4);
+  const double edge = mean_edge_length(s.positions, s.faces), sigma = 0.2 * edge;
+  const Positions noisy = add_gaussian_noise(s.positions, s.faces, 20, NoiseDirection::Isotropic, 3);
+  auto run = [&](const Positions& y1, Positions& identity, Positions& smoothed) {
+    identity = y1;
+    smoothed = laplacian_smoothing(y1, s.faces);
+    return true;
+  };
+  RecorruptedRisks risks;
+  ASSERT_TRUE(recorrupted_risks(noisy, sigma, 3, 7, run, risks));
+  EXPECT_EQ(risks.draws, 3);
+  EXPECT_LT(risks.second, risks.first);
+  // The same difference as the true errors' at the copies' noise, sigma sqrt(1 + a^2), within 10%.
+  const Positions noisier =
+      add_gaussian_noise(s.positions, s.faces, 20 * std::sqrt(1 + kRecorruptionScale * kRecorruptionScale), NoiseDirection::Isotropic, 4);
+  const double true_difference = mean_squared_error(noisier, s.positions) -
+                                 mean_squared_error(laplacian_smoothing(noisier, s.faces), s.positions);
+  EXPECT_NEAR(risks.first - risks.second, true_difference, 0.1 * true_difference);
+}
+
+TEST(RecorruptedRisk, RefusesWhatItCannotScore) {
+  const test::ArrayMesh s = test::sphere(1);
+  RecorruptedRisks risks;
+  auto run = [](const Positions& y1, Positions& a, Positions& b) {
+    a = b = y1;
+    return true;
+  };
+  EXPECT_FALSE(recorrupted_risks(s.positions, 0, 3, 1, run, risks));
+  EXPECT_FALSE(recorrupted_risks(s.positions, 0.1, 0, 1, run, risks));
+  EXPECT_FALSE(recorrupted_risks(Positions(0, 3), 0.1, 3, 1, run, risks));
+  auto failing = [](const Positions&, Positions&, Positions&) { return false; };
+  EXPECT_FALSE(recorrupted_risks(s.positions, 0.1, 3, 1, failing, risks));
+}
+
+}  // namespace
+}  // namespace hht
