@@ -295,6 +295,8 @@ NoiseAdaptiveSmoothingOptions lab_options() {
   if (const char* x = std::getenv("LAB_GIVEN")) o.noise = std::atof(x);  // the noise given (sigma / mean edge)
   if (std::getenv("LAB_SURE")) o.unbiased_risk = true;  // with LAB_GIVEN: the cut-off by Stein's risk
   if (const char* x = std::getenv("LAB_STRONGEST")) o.strongest_selected = std::atof(x);
+  if (const char* x = std::getenv("LAB_MOVERADIUS")) o.move_radius = std::atof(x);
+  if (std::getenv("LAB_NOPASS")) o.face_normal_pass = false;  // item 20's face-normal pass off
   return o;
 }
 
@@ -778,6 +780,7 @@ int main(int argc, char** argv) {
     };
     auto run = [&](int which, const Positions& in) {
       NoiseAdaptiveSmoothingOptions o = lab_options();
+      o.face_normal_pass = false;  // the candidates add their own
       if (which == 2) o.tangential_cap = 1e9;
       Positions out;
       NoiseAdaptiveSmoothingReport r;
@@ -793,9 +796,10 @@ int main(int argc, char** argv) {
     for (int which = 0; which < 4; ++which) {
       const Positions truth_run = run(which, noisy).first;
       double lap = 0, pos = 0, ang = 0;
-      const int draws = 3;
+      const int draws = std::getenv("LAB_DRAWS") ? std::atoi(std::getenv("LAB_DRAWS")) : 3;
+      const int seed0 = std::getenv("LAB_R2RSEED") ? std::atoi(std::getenv("LAB_R2RSEED")) : 100;
       for (int d = 0; d < draws; ++d) {
-        std::mt19937 r2(100 + d);
+        std::mt19937 r2(seed0 + d);
         std::normal_distribution<double> z(0, sigma);
         Positions zn(n, 3);
         for (int i = 0; i < n; ++i) for (int k = 0; k < 3; ++k) zn(i, k) = z(r2);
@@ -809,6 +813,64 @@ int main(int argc, char** argv) {
       std::printf("  %-20s true E_a %6.2f rms %5.1f | R2R lap %.5f pos %.5f ang %.2f\n", names[which], s.ea, s.rms, lap / draws / (h * h),
                   pos / draws / (h * h), ang / draws);
     }
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[3]) == "Z") {  // the normal pass chosen by a recorrupted risk of the face normals
+    // With y1 = y + a z, y2 = y - z / a (z of the estimated sigma), y2's area vectors are unbiased
+    // for the clean ones (quadratic in independent noise), so sum_f w_f n_f(out(y1)) . A_f(y2),
+    // w_f fixed per draw (1 / |A_f| of the smoothing of y1), estimates sum_f cos(angle to the clean
+    // normal): the candidate with the larger sum has the smaller normal error.
+    std::string err;
+    std::vector<std::vector<int>> vf(n);
+    for (Eigen::Index i = 0; i < f.rows(); ++i) for (int k = 0; k < 3; ++k) vf[f(i, k)].push_back(int(i));
+    NoiseAdaptiveSmoothingOptions o = lab_options();
+    o.face_normal_pass = false;  // the pass is the candidate here, applied after the whole smoothing
+    Positions nas;
+    NoiseAdaptiveSmoothingReport r;
+    noise_adaptive_smooth(noisy, f, o, nas, r, err);
+    const double sigma = r.sigma_used * h;
+    auto pass = [&](const Positions& p, const Positions& input) {
+      Positions out = fit_vertices_to_normals(p, f, averaged_face_normals(p, f, vf, 1e9), 2);
+      hold(out, input, kMoveRadius * sigma);
+      return out;
+    };
+    const Positions nas_pass = pass(nas, noisy);
+    const double alpha = std::getenv("LAB_ALPHA") ? std::atof(std::getenv("LAB_ALPHA")) : 0.5;
+    const int draws = std::getenv("LAB_DRAWS") ? std::atoi(std::getenv("LAB_DRAWS")) : 3;
+    const int seed0 = std::getenv("LAB_R2RSEED") ? std::atoi(std::getenv("LAB_R2RSEED")) : 100;
+    const bool fixed_mu = std::getenv("LAB_FIXEDMU") != nullptr;  // the copies smoothed at the data's cut-off, no selection
+    double gain = 0, gain_sq = 0, pos_gain = 0, pos_base = 0;
+    for (int d = 0; d < draws; ++d) {
+      std::mt19937 r2(seed0 + d);
+      std::normal_distribution<double> z(0, sigma);
+      Positions zn(n, 3);
+      for (int i = 0; i < n; ++i) for (int k = 0; k < 3; ++k) zn(i, k) = z(r2);
+      const Positions y1 = noisy + alpha * zn, y2 = noisy - zn / alpha;
+      NoiseAdaptiveSmoothingOptions o1 = o;
+      if (fixed_mu) o1.mu = r.mu;
+      Positions s1;
+      NoiseAdaptiveSmoothingReport r1;
+      noise_adaptive_smooth(y1, f, o1, s1, r1, err);
+      const Positions p1 = pass(s1, y1);
+      const Positions ns = face_normals(s1, f), np = face_normals(p1, f);
+      double g = 0;
+      for (Eigen::Index i = 0; i < f.rows(); ++i) {
+        const Eigen::RowVector3d a = y2.row(f(i, 0));
+        const Eigen::RowVector3d A2 = (y2.row(f(i, 1)) - a).cross(y2.row(f(i, 2)) - a);
+        const Eigen::RowVector3d b = s1.row(f(i, 0));
+        const double w = 1.0 / std::max((s1.row(f(i, 1)) - b).cross(s1.row(f(i, 2)) - b).norm(), 1e-300);
+        g += w * (np.row(i) - ns.row(i)).dot(A2);
+      }
+      g /= f.rows();
+      gain += g;
+      gain_sq += g * g;
+      pos_gain += ((s1 - y2).squaredNorm() - (p1 - y2).squaredNorm()) / n / (h * h);
+      pos_base += (s1 - y2).squaredNorm() / n / (h * h);
+    }
+    const double mean = gain / draws, sd = std::sqrt(std::max(0.0, gain_sq / draws - mean * mean));
+    const Score a = score(nas, clean, f), b = score(nas_pass, clean, f);
+    std::printf("  Z NAS %.2f / %.1f pass %.2f / %.1f | cos gain %.5f (sd %.5f) pos gain %.5f rel %.1f mu %.3f%s\n", a.ea, a.rms, b.ea, b.rms, mean, sd,
+                pos_gain / draws, 1e4 * pos_gain / pos_base, r.mu, fixed_mu ? " fixed" : "");
     return 0;
   }
   if (argc > 3 && std::string(argv[3]) == "S") {  // strength chosen by recorrupted-to-recorrupted face-normal angle, against the true E_a
@@ -1850,7 +1912,9 @@ int main(int argc, char** argv) {
         NoiseAdaptiveSmoothingReport r;
         if (!noise_adaptive_smooth(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); return 1; }
         char name[64];
-        std::snprintf(name, sizeof name, "NAS s%.2f mu %.3f%s (%.3f)", strength, r.mu, r.cutoff_selected ? "*" : "", r.sigma_used);
+        std::snprintf(name, sizeof name, "NAS s%.2f mu %.3f%s (%.3f)%s", strength, r.mu, r.cutoff_selected ? "*" : "", r.sigma_used,
+                      r.face_normal_pass ? " pass" : "");
+        std::printf("  face-normal pass risk change %+.5f\n", r.pass_risk_change);
         show(name, out);
         if (std::getenv("LAB_TURNED")) {  // the faces left turned against the input: their tilts from the result's surface
           const Positions sn = area_weighted_vertex_normals(out, f), in_n = face_normals(noisy, f), out_n = face_normals(out, f);

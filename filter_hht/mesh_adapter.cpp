@@ -5,6 +5,7 @@
 
 #include <vcg/complex/algorithms/update/color.h>
 
+#include <cmath>
 #include <limits>
 
 namespace hht_plugin {
@@ -67,6 +68,13 @@ QString stage_times_line(const std::vector<hht::StageTime>& stages) {
     total += s.seconds;
   }
   return line + QString(" total %1").arg(total, 0, 'f', 3);
+}
+
+QString face_normal_pass_line(bool kept, double risk_change) {
+  return QString("  face-normal pass %1: the smoothing's recorrupted risk with it is %2% %3 than without it")
+      .arg(kept ? "kept" : "left out")
+      .arg(100 * std::abs(risk_change), 0, 'g', 2)
+      .arg(risk_change < 0 ? "lower" : "higher");
 }
 
 QString noise_estimate_text(const hht::NoiseEstimate& e) {

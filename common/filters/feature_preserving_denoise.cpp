@@ -206,6 +206,7 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     smoothing.noise = sigma;
     smoothing.select_cutoff = false;  // the noise level's cut-off: the refinement was measured from it
     smoothing.unturn_wrinkles = false;  // the tangle test counts the faces this smoothing turns
+    smoothing.face_normal_pass = false;  // the refinement was measured from the smoothing without it
     smoothing.first_order = options.untangle_first_order;
     smoothing.mu_scale = options.untangle_mu_scale;
     NoiseAdaptiveSmoothingReport smoothing_report;
@@ -247,6 +248,8 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
         return false;
       report.smoothed_instead = true;
       report.smoothed_by_risk = smoothing_report.cutoff_by_risk;
+      report.smoothed_face_normal_pass = smoothing_report.face_normal_pass;
+      report.smoothed_pass_risk_change = smoothing_report.pass_risk_change;
       clock.done("adaptive smoothing");
       if (options.detect_features && options.show_features && !detect_features(99)) return false;
       step(100, "Done");

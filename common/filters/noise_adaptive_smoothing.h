@@ -27,6 +27,13 @@
 //      leave tilted by more than 60 degrees keep the uncapped slide (it untangles them);
 //   4. faces left folded against the surface around them get their vertices moved to their
 //      one-ring centroids;
+//   4b. each face's normal is replaced by the mean of its neighbours' and the vertices follow
+//      (face_normal_pass.h), where that lowers the error as a recorrupted risk estimate tells it
+//      (recorrupted_risk.h): the smoothing at the same cut-off is run on two copies of the input
+//      with more noise added, with the pass and without, and each is compared with a third copy
+//      whose noise is independent of theirs. Well-shaped meshes keep it (small faces stand up that
+//      the cap of step 3 left tilted), coarse meshes with detail at the edge scale and CAD parts
+//      with creases do not (ours, docs/quality.md item 20);
 //   5. no vertex ends further than kMoveRadius * sigma * max(1, strength) mean edges from where
 //      it was: Gaussian noise moved it by more than 4 sigma with a probability of about 0.1%
 //      (3 degrees of freedom), while the uniform Laplacian moves a vertex with long edges (a
@@ -80,6 +87,13 @@ constexpr double kWeakestSearched = 1.5;
 // cost is the solve's, whose iterations grow as 1 / mu^2 (1.66M-vertex armadillo at 20%: 19 s
 // through meshlabserver with 2, 34 s with 3, 62 s with 4; docs/benchmarks.md).
 constexpr double kStrongestSelected = 3.0;
+// The face-normal pass's risk (step 4b): copies drawn, and the vertices of a large mesh it is
+// scored on (breadth-first patches, like the cross-validation's), with a fixed seed so that the
+// same input gets the same choice.
+constexpr int kPassDraws = 3;
+constexpr int kPassSampleVertices = 30000;
+constexpr int kPassPatches = 8;
+constexpr unsigned kPassSeed = 20261124;
 // The solve stops once no vertex can be further than this, relative to the bounding-box
 // diagonal, from the exact least-squares solution (a proven bound: biharmonic_low_pass.h).
 constexpr double kSmoothingMaxError = 1e-5;
@@ -91,6 +105,7 @@ struct NoiseAdaptiveSmoothingOptions {
   bool select_cutoff = true;   // a stronger cut-off than the noise level's where cross-validation finds one
   bool unbiased_risk = false;  // `noise` is the truth (the user's): the cut-off by Stein's unbiased risk instead
   bool unturn_wrinkles = true;  // step 7 (the denoiser's untangling counts the smoothing's own turns)
+  bool face_normal_pass = true;  // step 4b where its risk is lower (the denoiser's untangling: off)
   // Experiments (bench/quality_lab, docs/quality.md items 8-10): the tangential cap's factor
   // (infinity: no cap), the noise law's scale, how much weaker than the noise law's cut-off the
   // cross-validation may choose, the low-pass's first-order weight (0: second order only), the
@@ -102,6 +117,7 @@ struct NoiseAdaptiveSmoothingOptions {
   double first_order = kFirstOrder;
   double selection_bias = kSelectionBias;
   double strongest_selected = kStrongestSelected;
+  double move_radius = kMoveRadius;
   CycleOptions cycle;
   EmdOptions emd;
 };
@@ -122,6 +138,8 @@ struct NoiseAdaptiveSmoothingReport {
   int held_vertices = 0;       // held at kMoveRadius noise sigmas from where they were
   int restored_faces = 0;      // turned over by the smoothing, put back (step 6)
   int unturned_faces = 0;      // still turned, few: moved back until no longer turned (step 7)
+  bool face_normal_pass = false;  // step 4b was kept
+  double pass_risk_change = 0;    // its recorrupted risk relative to the risk without it, minus 1
   int iterations = 0;          // conjugate gradient iterations of the solve
   double error_bound = 0;      // largest position error of the solve, at most, / bbox diagonal
   std::vector<StageTime> stages;

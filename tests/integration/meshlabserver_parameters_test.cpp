@@ -624,6 +624,26 @@ TEST(MeshlabserverParameters, AdaptiveSmoothStrengthNoiseAndEmd) {
   }
 }
 
+// smooth.mlx keeps the face-normal pass where its recorrupted risk is lower (camel, well-shaped)
+// and leaves it out where it is higher (cow, coarse), as the library does, and logs the choice.
+TEST(MeshlabserverParameters, AdaptiveSmoothLogsTheFaceNormalPassChoice) {
+  for (const char* mesh : {"camel", "cow"}) {
+    const Input in = read_input(mesh);
+    Positions noisy;
+    std::string input;
+    ASSERT_NO_FATAL_FAILURE(write_noisy(mesh, in, 10.0, NoiseDirection::Isotropic, 21, noisy, input));
+    Positions expected;
+    NoiseAdaptiveSmoothingReport report;
+    std::string error;
+    ASSERT_TRUE(noise_adaptive_smooth(noisy, in.faces, {}, expected, report, error)) << error;
+    EXPECT_EQ(report.face_normal_pass, std::string(mesh) == "camel") << mesh;
+    const ServerRun run = run_resource(input, "smooth.mlx", {}, std::string("adaptive_pass_") + mesh);
+    expect_positions(saved_positions(run), expected, in.diagonal, mesh);
+    EXPECT_NE(run.log.find(report.face_normal_pass ? "face-normal pass kept" : "face-normal pass left out"), std::string::npos)
+        << run.log;
+  }
+}
+
 TEST(MeshlabserverParameters, GuidedDenoiseRoundsPassesSigmaIterations) {
   const NoisyInput n = noisy_fandisk("guided_input");
   GuidedNormalDenoiseOptions o;
