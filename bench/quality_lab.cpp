@@ -331,6 +331,16 @@ Positions averaged_face_normals(const Positions& p, const Faces& f, const std::v
   return averaged;
 }
 
+// Recorrupted copies (Pang et al. 2021): y1 = y + a z, y2 = y - z / a, z isotropic of `sigma`.
+void recorrupted_copies(const Positions& y, double sigma, double alpha, int seed, Positions& y1, Positions& y2) {
+  std::mt19937 r2(seed);
+  std::normal_distribution<double> z(0, sigma);
+  Positions zn(y.rows(), 3);
+  for (Eigen::Index i = 0; i < y.rows(); ++i) for (int k = 0; k < 3; ++k) zn(i, k) = z(r2);
+  y1 = y + alpha * zn;
+  y2 = y - zn / alpha;
+}
+
 // The smoothing's last step: no vertex further than `radius` from the input.
 void hold(Positions& out, const Positions& input, double radius) {
   for (Eigen::Index i = 0; i < out.rows(); ++i) {
@@ -799,11 +809,8 @@ int main(int argc, char** argv) {
       const int draws = std::getenv("LAB_DRAWS") ? std::atoi(std::getenv("LAB_DRAWS")) : 3;
       const int seed0 = std::getenv("LAB_R2RSEED") ? std::atoi(std::getenv("LAB_R2RSEED")) : 100;
       for (int d = 0; d < draws; ++d) {
-        std::mt19937 r2(seed0 + d);
-        std::normal_distribution<double> z(0, sigma);
-        Positions zn(n, 3);
-        for (int i = 0; i < n; ++i) for (int k = 0; k < 3; ++k) zn(i, k) = z(r2);
-        const Positions y1 = noisy + alpha * zn, y2 = noisy - zn / alpha;
+        Positions y1, y2;
+        recorrupted_copies(noisy, sigma, alpha, seed0 + d, y1, y2);
         const Positions out = run(which, y1).first;
         lap += Positions(L * Positions(out - y2)).squaredNorm() / n;
         pos += (out - y2).squaredNorm() / n;
@@ -841,11 +848,8 @@ int main(int argc, char** argv) {
     const bool fixed_mu = std::getenv("LAB_FIXEDMU") != nullptr;  // the copies smoothed at the data's cut-off, no selection
     double gain = 0, gain_sq = 0, pos_gain = 0, pos_base = 0;
     for (int d = 0; d < draws; ++d) {
-      std::mt19937 r2(seed0 + d);
-      std::normal_distribution<double> z(0, sigma);
-      Positions zn(n, 3);
-      for (int i = 0; i < n; ++i) for (int k = 0; k < 3; ++k) zn(i, k) = z(r2);
-      const Positions y1 = noisy + alpha * zn, y2 = noisy - zn / alpha;
+      Positions y1, y2;
+      recorrupted_copies(noisy, sigma, alpha, seed0 + d, y1, y2);
       NoiseAdaptiveSmoothingOptions o1 = o;
       if (fixed_mu) o1.mu = r.mu;
       Positions s1;
@@ -884,12 +888,10 @@ int main(int argc, char** argv) {
     const int draws = 3;
     std::vector<Positions> y1s, y2s;
     for (int d = 0; d < draws; ++d) {
-      std::mt19937 r2(100 + d);
-      std::normal_distribution<double> z(0, sigma);
-      Positions zn(n, 3);
-      for (int i = 0; i < n; ++i) for (int k = 0; k < 3; ++k) zn(i, k) = z(r2);
-      y1s.push_back(noisy + alpha * zn);
-      y2s.push_back(noisy - zn / alpha);
+      Positions y1, y2;
+      recorrupted_copies(noisy, sigma, alpha, 100 + d, y1, y2);
+      y1s.push_back(y1);
+      y2s.push_back(y2);
     }
     for (double strength : {0.35, 0.5, 0.7, 1.0, 1.4, 2.0, 2.8}) {
       NoiseAdaptiveSmoothingOptions o = base;
