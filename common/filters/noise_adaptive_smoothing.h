@@ -29,9 +29,10 @@
 //      one-ring centroids;
 //   4b. each face's normal is replaced by the mean of its neighbours' and the vertices follow
 //      (face_normal_pass.h), where that lowers the error as a recorrupted risk estimate tells it
-//      (recorrupted_risk.h): the smoothing at the same cut-off is run on two copies of the input
-//      with more noise added, with the pass and without, and each is compared with a third copy
-//      whose noise is independent of theirs. Well-shaped meshes keep it (small faces stand up that
+//      (recorrupted_risk.h): the smoothing is rerun, with the pass and without, on a copy of the
+//      input with more noise added (at the cut-off the law gives that noise), and both results
+//      are compared with a second copy whose noise is independent of the first's (three draws).
+//      Well-shaped meshes keep it (small faces stand up that
 //      the cap of step 3 left tilted), coarse meshes with detail at the edge scale and CAD parts
 //      with creases do not (ours, docs/quality.md item 20);
 //   5. no vertex ends further than kMoveRadius * sigma * max(1, strength) mean edges from where
