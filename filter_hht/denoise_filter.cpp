@@ -211,7 +211,8 @@ bool apply(FilterRun& run) {
     run.log("  no sharp creases read, but the mesh has exactly flat parts (its noise estimate was capped by them): "
             "a CAD part, refined all the same");
   if (report.smoothed_instead) {
-    run.log(face_normal_pass_line(report.smoothed_face_normal_pass, report.smoothed_pass_risk_change));
+    run.log(face_normal_pass_line(report.smoothed_pass_risk_scored, report.smoothed_face_normal_pass,
+                                report.smoothed_pass_risk_change));
     run.log("  no refinement (the surface has no sharp creases)");
   } else if (report.refine_normal_passes > 0 && o.refine_vertex_iterations > 0) {
     const int own_rounds = report.refine_own_normal_rounds, guided_rounds = report.refine_rounds - own_rounds;

@@ -70,7 +70,8 @@ QString stage_times_line(const std::vector<hht::StageTime>& stages) {
   return line + QString(" total %1").arg(total, 0, 'f', 3);
 }
 
-QString face_normal_pass_line(bool kept, double risk_change) {
+QString face_normal_pass_line(bool scored, bool kept, double risk_change) {
+  if (!scored) return "  face-normal pass left out: its risk could not be scored (a copy's smoothing did not converge)";
   return QString("  face-normal pass %1: the smoothing's recorrupted risk with it is %2% %3 than without it")
       .arg(kept ? "kept" : "left out")
       .arg(100 * std::abs(risk_change), 0, 'g', 2)

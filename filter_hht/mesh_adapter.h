@@ -53,8 +53,8 @@ QString stage_times_line(const std::vector<hht::StageTime>& stages);
 QString noise_estimate_text(const hht::NoiseEstimate& estimate);
 
 // "  face-normal pass kept: the smoothing's recorrupted risk with it is 0.15% lower than without it" (or
-// "left out" and "higher").
-QString face_normal_pass_line(bool kept, double risk_change);
+// "left out" and "higher"; or that it could not be scored).
+QString face_normal_pass_line(bool scored, bool kept, double risk_change);
 
 // One line per IMF: "    IMF k: s sifts, frequency f, energy e%".
 QStringList imf_summary_lines(const std::vector<hht::ImfSummary>& imfs);

@@ -153,7 +153,8 @@ struct DenoiseReport {
   bool smoothed_instead = false;  // no sharp creases: the result is the adaptive smoothing
   bool smoothed_by_risk = false;  // its cut-off by Stein's unbiased risk (the noise was given)
   bool smoothed_face_normal_pass = false;  // that smoothing kept its face-normal pass
-  double smoothed_pass_risk_change = 0;     // and the pass's recorrupted risk change
+  bool smoothed_pass_risk_scored = false;  // the pass's recorrupted risk was scored
+  double smoothed_pass_risk_change = 0;     // and its change
   bool flat_parts_refined = false;  // no sharp creases read, but flat parts: refined all the same
   bool smoothing_distorts = false;  // the noise-level smoothing moved the mesh beyond the noise: refined from the input
   int refine_rounds_asked = 0;   // given, or set by the noise

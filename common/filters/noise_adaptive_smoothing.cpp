@@ -120,9 +120,9 @@ Positions finish_smoothing(const Positions& solved, const Positions& v, const Fa
 }
 
 // The recorrupted risks of the smoothing at cut-off `mu` without the face-normal pass (first) and
-// with it (second), on breadth-first patches of a large mesh.
+// with it (second), on breadth-first patches of a large mesh. False if a copy's solve failed.
 bool normal_pass_risks(const Positions& v, const Faces& faces, const VertexAdjacency& adjacency, double sigma, double mu,
-                       double max_error, const NoiseAdaptiveSmoothingOptions& options, RecorruptedRisks& risks, std::string& error) {
+                       double max_error, const NoiseAdaptiveSmoothingOptions& options, RecorruptedRisks& risks) {
   const bool sample = v.rows() > kPassSampleVertices;
   std::vector<int> kept;
   Faces sampled_faces;
@@ -151,11 +151,7 @@ bool normal_pass_risks(const Positions& v, const Faces& faces, const VertexAdjac
     with = finish_smoothing(solved, y1, f, a, copy_sigma, options, true, counts);
     return true;
   };
-  if (!recorrupted_risks(sample ? sampled_v : v, sigma, kPassDraws, kPassSeed, run, risks)) {
-    error = "the face-normal pass's risk estimate failed (its smoothing did not converge)";
-    return false;
-  }
-  return true;
+  return recorrupted_risks(sample ? sampled_v : v, sigma, kPassDraws, kPassSeed, run, risks);
 }
 
 }  // namespace
@@ -274,13 +270,17 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
   Positions finished = finish_smoothing(x, v, faces, adjacency, sigma, options, false, counts);
   clock.done("cap, unfold and hold");
   if (options.face_normal_pass) {
-    // Scored on recorrupted copies smoothed at the same cut-off, with the pass and without.
+    // Scored on recorrupted copies, smoothed with the pass and without. A copy whose solve does
+    // not converge leaves the pass out: the smoothing itself is done.
     step(94, "Face-normal pass: recorrupted risk");
     RecorruptedRisks risks;
-    if (!normal_pass_risks(v, faces, adjacency, sigma, report.mu, kSmoothingMaxError * diagonal / edge, options, risks, error))
-      return false;
-    report.pass_risk_change = (risks.second - risks.first) / risks.first;
-    report.face_normal_pass = risks.second < risks.first;
+    report.pass_risk_scored =
+        normal_pass_risks(v, faces, adjacency, sigma, report.mu, kSmoothingMaxError * diagonal / edge, options, risks) &&
+        risks.first > 0;
+    if (report.pass_risk_scored) {
+      report.pass_risk_change = (risks.second - risks.first) / risks.first;
+      report.face_normal_pass = risks.second < risks.first;
+    }
     if (report.face_normal_pass) finished = finish_smoothing(x, v, faces, adjacency, sigma, options, true, counts);
     clock.done("face-normal pass");
   }

@@ -140,6 +140,7 @@ struct NoiseAdaptiveSmoothingReport {
   int restored_faces = 0;      // turned over by the smoothing, put back (step 6)
   int unturned_faces = 0;      // still turned, few: moved back until no longer turned (step 7)
   bool face_normal_pass = false;  // step 4b was kept
+  bool pass_risk_scored = false;  // its risk was scored (false: not asked for, or a copy's solve failed)
   double pass_risk_change = 0;    // its recorrupted risk relative to the risk without it, minus 1
   int iterations = 0;          // conjugate gradient iterations of the solve
   double error_bound = 0;      // largest position error of the solve, at most, / bbox diagonal

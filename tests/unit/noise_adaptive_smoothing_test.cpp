@@ -62,6 +62,7 @@ TEST(NoiseAdaptiveSmoothing, KeepsTheFaceNormalPassWhereItsRiskIsLower) {
     const Positions noisy = add_gaussian_noise(m.positions, m.faces, 10, NoiseDirection::Isotropic, 21);
     NoiseAdaptiveSmoothingReport report;
     const Positions ours = smooth(noisy, m.faces, {}, &report), plain = smooth(noisy, m.faces, without);
+    EXPECT_TRUE(report.pass_risk_scored) << name;
     EXPECT_EQ(report.face_normal_pass, well_shaped) << name;
     EXPECT_EQ(report.pass_risk_change < 0, well_shaped) << name;
     if (well_shaped)
