@@ -80,10 +80,9 @@ struct FinishCounts {
   int unfolded = 0, held = 0, restored = 0, unturned = 0;
 };
 
-// Steps 3-7 on the solve's output `solved` for the input `v` (unit mean edge), with the
-// face-normal pass between the unfolding and the hold when `normal_pass`.
-Positions finish_smoothing(const Positions& solved, const Positions& v, const Faces& faces, const VertexAdjacency& adjacency,
-                           double sigma, const NoiseAdaptiveSmoothingOptions& options, bool normal_pass, FinishCounts& counts) {
+// Steps 3 and 4 on the solve's output `solved` for the input `v` (unit mean edge).
+Positions cap_and_unfold(const Positions& solved, const Positions& v, const Faces& faces, const VertexAdjacency& adjacency,
+                         double sigma, const NoiseAdaptiveSmoothingOptions& options, FinishCounts& counts) {
   // Tangential moves capped, except around faces the cap would leave tilted (more than 60
   // degrees from the uncapped result's face): there the slide untangles noise-flipped triangles.
   Positions x = solved;
@@ -110,12 +109,17 @@ Positions finish_smoothing(const Positions& solved, const Positions& v, const Fa
     }
     if (!changed) break;
   }
-  counts = FinishCounts{};
   counts.unfolded = unfold(x, faces, adjacency);
+  return x;
+}
+
+// Step 4b when `normal_pass`, then steps 5-7, on the output `x` of cap_and_unfold.
+Positions finish_smoothing(Positions x, const Positions& v, const Faces& faces, double sigma,
+                           const NoiseAdaptiveSmoothingOptions& options, bool normal_pass, FinishCounts& counts) {
   if (normal_pass) x = face_normal_pass(x, faces);
   counts.held = hold_within_noise(x, v, options.move_radius * sigma * std::max(1.0, options.strength));
   counts.restored = restore_turned_faces_that_fit(v, faces, kRestoredFaceTilt, x);
-  if (options.unturn_wrinkles) counts.unturned = unturn_few_turned_faces(v, faces, kWrinkleShare, x);
+  counts.unturned = options.unturn_wrinkles ? unturn_few_turned_faces(v, faces, kWrinkleShare, x) : 0;
   return x;
 }
 
@@ -147,8 +151,9 @@ bool normal_pass_risks(const Positions& v, const Faces& faces, const VertexAdjac
     BiharmonicLowPassReport solve;
     if (!biharmonic_low_pass(a, y1, copy_mu, options.first_order, max_error, solved, solve)) return false;
     FinishCounts counts;
-    without = finish_smoothing(solved, y1, f, a, copy_sigma, options, false, counts);
-    with = finish_smoothing(solved, y1, f, a, copy_sigma, options, true, counts);
+    const Positions unfolded = cap_and_unfold(solved, y1, f, a, copy_sigma, options, counts);
+    without = finish_smoothing(unfolded, y1, f, copy_sigma, options, false, counts);
+    with = finish_smoothing(unfolded, y1, f, copy_sigma, options, true, counts);
     return true;
   };
   return recorrupted_risks(sample ? sampled_v : v, sigma, kPassDraws, kPassSeed, run, risks);
@@ -267,7 +272,8 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
 
   step(92, "Tangential cap, unfolding and hold");
   FinishCounts counts;
-  Positions finished = finish_smoothing(x, v, faces, adjacency, sigma, options, false, counts);
+  const Positions unfolded = cap_and_unfold(x, v, faces, adjacency, sigma, options, counts);
+  Positions finished = finish_smoothing(unfolded, v, faces, sigma, options, false, counts);
   clock.done("cap, unfold and hold");
   if (options.face_normal_pass) {
     // Scored on recorrupted copies, smoothed with the pass and without. A copy whose solve does
@@ -281,7 +287,7 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
       report.pass_risk_change = (risks.second - risks.first) / risks.first;
       report.face_normal_pass = risks.second < risks.first;
     }
-    if (report.face_normal_pass) finished = finish_smoothing(x, v, faces, adjacency, sigma, options, true, counts);
+    if (report.face_normal_pass) finished = finish_smoothing(unfolded, v, faces, sigma, options, true, counts);
     clock.done("face-normal pass");
   }
   x = finished;

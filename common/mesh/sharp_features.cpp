@@ -2,6 +2,7 @@
 
 #include "mesh/corner_table.h"
 #include "cycle/feature_lines.h"
+#include "mesh/face_rings.h"
 #include "mesh/mesh_checks.h"
 #include "util/parallel_for.h"
 
@@ -16,17 +17,10 @@ namespace hht {
 
 namespace {
 
-// Compressed adjacency lists: the items of list i are items[start[i] .. start[i+1]).
-struct Lists {
-  std::vector<int> start, items;
-  int begin(int i) const { return start[i]; }
-  int end(int i) const { return start[i + 1]; }
-};
-
 // Builds lists from (list, item) pairs by a counting sort: linear time.
 template <class Pairs>
-Lists make_lists(int count, const Pairs& for_each_pair) {
-  Lists l;
+IndexLists make_lists(int count, const Pairs& for_each_pair) {
+  IndexLists l;
   l.start.assign(count + 1, 0);
   for_each_pair([&](int list, int) { ++l.start[list + 1]; });
   std::partial_sum(l.start.begin(), l.start.end(), l.start.begin());
@@ -41,8 +35,8 @@ struct Topology {
   std::vector<std::array<int, 2>> edge_vertices;
   std::vector<std::array<int, 2>> edge_faces;  // second face -1 on the mesh boundary
   std::vector<int> corner_edge;          // per corner (3 f + k): the edge opposite it
-  Lists vertex_faces, vertex_edges;
-  Lists face_faces;                      // faces sharing a vertex with the face, itself included
+  IndexLists vertex_faces, vertex_edges;
+  IndexLists face_faces;                      // faces sharing a vertex with the face, itself included
 };
 
 bool build_topology(const Faces& faces, int vertex_count, Topology& topo, std::string& error) {
@@ -64,30 +58,13 @@ bool build_topology(const Faces& faces, int vertex_count, Topology& topo, std::s
     topo.edge_vertices.push_back({table.vertex[corner_next(c)], table.vertex[corner_prev(c)]});
     topo.edge_faces.push_back({c / 3, o >= 0 ? o / 3 : -1});
   }
-  const int nf = static_cast<int>(topo.faces.rows());
   const int ne = static_cast<int>(topo.edge_vertices.size());
-  topo.vertex_faces = make_lists(vertex_count, [&](auto&& add) {
-    for (int f = 0; f < nf; ++f)
-      for (int k = 0; k < 3; ++k) add(topo.faces(f, k), f);
-  });
+  topo.vertex_faces = vertex_faces(topo.faces, vertex_count);
   topo.vertex_edges = make_lists(vertex_count, [&](auto&& add) {
     for (int e = 0; e < ne; ++e)
       for (int v : topo.edge_vertices[e]) add(v, e);
   });
-  topo.face_faces.start.assign(nf + 1, 0);
-  std::vector<int> ring;
-  for (int f = 0; f < nf; ++f) {
-    ring.clear();
-    for (int k = 0; k < 3; ++k) {
-      const int v = topo.faces(f, k);
-      ring.insert(ring.end(), topo.vertex_faces.items.begin() + topo.vertex_faces.begin(v),
-                  topo.vertex_faces.items.begin() + topo.vertex_faces.end(v));
-    }
-    std::sort(ring.begin(), ring.end());
-    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
-    topo.face_faces.items.insert(topo.face_faces.items.end(), ring.begin(), ring.end());
-    topo.face_faces.start[f + 1] = static_cast<int>(topo.face_faces.items.size());
-  }
+  topo.face_faces = face_rings(topo.faces, vertex_count);
   return true;
 }
 
