@@ -297,6 +297,7 @@ NoiseAdaptiveSmoothingOptions lab_options() {
   if (const char* x = std::getenv("LAB_STRONGEST")) o.strongest_selected = std::atof(x);
   if (const char* x = std::getenv("LAB_MOVERADIUS")) o.move_radius = std::atof(x);
   if (std::getenv("LAB_NOPASS")) o.face_normal_pass = false;  // item 20's face-normal pass off
+  if (std::getenv("LAB_NOTSHARE")) o.tangential_share = false;  // item 21's tangential share off
   return o;
 }
 
@@ -1917,6 +1918,7 @@ int main(int argc, char** argv) {
         std::snprintf(name, sizeof name, "NAS s%.2f mu %.3f%s (%.3f)%s", strength, r.mu, r.cutoff_selected ? "*" : "", r.sigma_used,
                       r.face_normal_pass ? " pass" : "");
         std::printf("  face-normal pass risk change %+.5f\n", r.pass_risk_change);
+        std::printf("  tangential share %.3f\n", r.tangential_share);
         show(name, out);
         if (std::getenv("LAB_TURNED")) {  // the faces left turned against the input: their tilts from the result's surface
           const Positions sn = area_weighted_vertex_normals(out, f), in_n = face_normals(noisy, f), out_n = face_normals(out, f);

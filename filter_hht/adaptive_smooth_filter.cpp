@@ -79,6 +79,7 @@ bool apply(FilterRun& run) {
                     "%4 faces turned over put back, %5 more moved back until no longer turned over (wrinkles of the triangulation)")
                 .arg(report.unfolded_vertices).arg(report.held_vertices).arg(hht::kMoveRadius).arg(report.restored_faces)
                 .arg(report.unturned_faces));
+  if (const QString line = tangential_share_line(report.tangential_share); !line.isEmpty()) run.log(line);
   run.log(face_normal_pass_line(report.pass_risk_scored, report.face_normal_pass, report.pass_risk_change));
   run.log(stage_times_line(report.stages));
   return true;

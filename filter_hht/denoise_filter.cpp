@@ -211,6 +211,7 @@ bool apply(FilterRun& run) {
     run.log("  no sharp creases read, but the mesh has exactly flat parts (its noise estimate was capped by them): "
             "a CAD part, refined all the same");
   if (report.smoothed_instead) {
+    if (const QString line = tangential_share_line(report.smoothed_tangential_share); !line.isEmpty()) run.log(line);
     run.log(face_normal_pass_line(report.smoothed_pass_risk_scored, report.smoothed_face_normal_pass,
                                 report.smoothed_pass_risk_change));
     run.log("  no refinement (the surface has no sharp creases)");

@@ -78,6 +78,14 @@ QString face_normal_pass_line(bool scored, bool kept, double risk_change) {
       .arg(risk_change < 0 ? "lower" : "higher");
 }
 
+QString tangential_share_line(double share) {
+  if (!(share < 1)) return {};
+  return QString("  slides along the surface capped at %1% of what isotropic noise of that sigma allows: the input's "
+                 "tangential offsets hold no more%2")
+      .arg(100 * share, 0, 'f', 0)
+      .arg(share < 0.5 ? " (noise mostly along the normals)" : "");
+}
+
 QString noise_estimate_text(const hht::NoiseEstimate& e) {
   if (hht::may_be_surface_detail(e))
     return QString("estimated from the finest IMF; clean meshes read up to %1% from their own detail at the scale of "

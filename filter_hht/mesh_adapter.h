@@ -55,6 +55,9 @@ QString noise_estimate_text(const hht::NoiseEstimate& estimate);
 // "  face-normal pass kept: the smoothing's recorrupted risk with it is 0.15% lower than without it" (or
 // "left out" and "higher"; or that it could not be scored).
 QString face_normal_pass_line(bool scored, bool kept, double risk_change);
+// The smoothing's tangential cap when the input holds less tangential noise than isotropic noise
+// (share below 1; tangential_noise.h); empty otherwise.
+QString tangential_share_line(double share);
 
 // One line per IMF: "    IMF k: s sifts, frequency f, energy e%".
 QStringList imf_summary_lines(const std::vector<hht::ImfSummary>& imfs);

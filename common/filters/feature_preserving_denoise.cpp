@@ -251,6 +251,7 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
       report.smoothed_face_normal_pass = smoothing_report.face_normal_pass;
       report.smoothed_pass_risk_scored = smoothing_report.pass_risk_scored;
       report.smoothed_pass_risk_change = smoothing_report.pass_risk_change;
+      report.smoothed_tangential_share = smoothing_report.tangential_share;
       clock.done("adaptive smoothing");
       if (options.detect_features && options.show_features && !detect_features(99)) return false;
       step(100, "Done");

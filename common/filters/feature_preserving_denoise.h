@@ -155,6 +155,7 @@ struct DenoiseReport {
   bool smoothed_face_normal_pass = false;  // that smoothing kept its face-normal pass
   bool smoothed_pass_risk_scored = false;  // the pass's recorrupted risk was scored
   double smoothed_pass_risk_change = 0;     // and its change
+  double smoothed_tangential_share = 1;     // that smoothing's tangential cap share (tangential_noise.h)
   bool flat_parts_refined = false;  // no sharp creases read, but flat parts: refined all the same
   bool smoothing_distorts = false;  // the noise-level smoothing moved the mesh beyond the noise: refined from the input
   int refine_rounds_asked = 0;   // given, or set by the noise

@@ -3,6 +3,7 @@
 #include "evaluation/gaussian_noise.h"
 #include "mesh/breadth_first_patches.h"
 #include "mesh/mesh_checks.h"
+#include "mesh/tangential_noise.h"
 #include "mesh/vertex_adjacency.h"
 #include "mesh/vertex_normals.h"
 #include "reconstruction/biharmonic_low_pass.h"
@@ -78,15 +79,22 @@ int hold_within_noise(Positions& x, const Positions& v, double radius) {
 
 struct FinishCounts {
   int unfolded = 0, held = 0, restored = 0, unturned = 0;
+  double tangential_share = 1;
 };
 
 // Steps 3 and 4 on the solve's output `solved` for the input `v` (unit mean edge).
 Positions cap_and_unfold(const Positions& solved, const Positions& v, const Faces& faces, const VertexAdjacency& adjacency,
                          double sigma, const NoiseAdaptiveSmoothingOptions& options, FinishCounts& counts) {
-  // Tangential moves capped, except around faces the cap would leave tilted (more than 60
-  // degrees from the uncapped result's face): there the slide untangles noise-flipped triangles.
+  // Tangential moves capped, by as much less as the input holds less tangential noise than
+  // isotropic noise of sigma would give it, except around faces the cap would leave tilted (more
+  // than 60 degrees from the uncapped result's face): there the slide untangles noise-flipped
+  // triangles.
   Positions x = solved;
-  const double cap = options.tangential_cap * sigma * sigma * options.strength;
+  const double share = options.tangential_share
+                           ? tangential_noise_share(v, smoothed_vertex_normals(v, faces, adjacency), adjacency, sigma)
+                           : 1.0;
+  counts.tangential_share = share;
+  const double cap = options.tangential_cap * sigma * sigma * share * options.strength;
   const Positions normals = area_weighted_vertex_normals(x, faces);
   for (Eigen::Index i = 0; i < x.rows(); ++i) {
     const Eigen::RowVector3d move = x.row(i) - v.row(i);
@@ -125,8 +133,9 @@ Positions finish_smoothing(Positions x, const Positions& v, const Faces& faces, 
 
 // The recorrupted risks of the smoothing at cut-off `mu` without the face-normal pass (first) and
 // with it (second), on breadth-first patches of a large mesh. False if a copy's solve failed.
-bool normal_pass_risks(const Positions& v, const Faces& faces, const VertexAdjacency& adjacency, double sigma, double mu,
-                       double max_error, const NoiseAdaptiveSmoothingOptions& options, RecorruptedRisks& risks) {
+bool normal_pass_risks(const Positions& v, const Faces& faces, const VertexAdjacency& adjacency, double sigma,
+                       double tangential_share, double mu, double max_error, const NoiseAdaptiveSmoothingOptions& options,
+                       RecorruptedRisks& risks) {
   const bool sample = v.rows() > kPassSampleVertices;
   std::vector<int> kept;
   Faces sampled_faces;
@@ -156,7 +165,13 @@ bool normal_pass_risks(const Positions& v, const Faces& faces, const VertexAdjac
     with = finish_smoothing(unfolded, y1, f, copy_sigma, options, true, counts);
     return true;
   };
-  return recorrupted_risks(sample ? sampled_v : v, sigma, kPassDraws, kPassSeed, run, risks);
+  // The copies' noise has the input's shape: with little tangential noise (noise along the
+  // normals), isotropic copies would score the smoothing on noise the input does not have.
+  const Positions& y = sample ? sampled_v : v;
+  NoiseShape shape;
+  shape.tangential_share = tangential_share;
+  if (tangential_share < 1) shape.unit_normals = smoothed_vertex_normals(y, f, a);
+  return recorrupted_risks(y, sigma, shape, kPassDraws, kPassSeed, run, risks);
 }
 
 }  // namespace
@@ -281,7 +296,8 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
     step(94, "Face-normal pass: recorrupted risk");
     RecorruptedRisks risks;
     report.pass_risk_scored =
-        normal_pass_risks(v, faces, adjacency, sigma, report.mu, kSmoothingMaxError * diagonal / edge, options, risks) &&
+        normal_pass_risks(v, faces, adjacency, sigma, counts.tangential_share, report.mu,
+                          kSmoothingMaxError * diagonal / edge, options, risks) &&
         risks.first > 0;
     if (report.pass_risk_scored) {
       report.pass_risk_change = (risks.second - risks.first) / risks.first;
@@ -292,6 +308,7 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
   }
   x = finished;
   report.unfolded_vertices = counts.unfolded;
+  report.tangential_share = counts.tangential_share;
   report.held_vertices = counts.held;
   report.restored_faces = counts.restored;
   report.unturned_faces = counts.unturned;

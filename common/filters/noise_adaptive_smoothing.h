@@ -24,7 +24,10 @@
 //      edges: the uniform Laplacian also slides vertices of an irregular (clean) triangulation
 //      towards their neighbours' centroid, which is no noise; tangential noise is of the order
 //      of sigma, so light noise allows little sliding and heavy noise more; faces the cap would
-//      leave tilted by more than 60 degrees keep the uncapped slide (it untangles them);
+//      leave tilted by more than 60 degrees keep the uncapped slide (it untangles them). The cap
+//      is scaled by the share of isotropic noise's tangential part that the input's tangential
+//      offsets hold (tangential_noise.h): noise along the normals has none, and there any slide
+//      is error (ours, docs/quality.md item 21);
 //   4. faces left folded against the surface around them get their vertices moved to their
 //      one-ring centroids;
 //   4b. each face's normal is replaced by the mean of its neighbours' and the vertices follow
@@ -107,6 +110,7 @@ struct NoiseAdaptiveSmoothingOptions {
   bool unbiased_risk = false;  // `noise` is the truth (the user's): the cut-off by Stein's unbiased risk instead
   bool unturn_wrinkles = true;  // step 7 (the denoiser's untangling counts the smoothing's own turns)
   bool face_normal_pass = true;  // step 4b where its risk is lower (the denoiser's untangling: off)
+  bool tangential_share = true;  // step 3's cap scaled by the tangential noise the offsets allow (experiments: off)
   // Experiments (bench/quality_lab, docs/quality.md items 8-10): the tangential cap's factor
   // (infinity: no cap), the noise law's scale, how much weaker than the noise law's cut-off the
   // cross-validation may choose, the low-pass's first-order weight (0: second order only), the
@@ -135,6 +139,7 @@ struct NoiseAdaptiveSmoothingReport {
   int selection_vertices = 0;    // vertices it scored on (a sample of a large mesh)
   double max_displacement = 0;
   double rms_displacement = 0;
+  double tangential_share = 1;  // step 3's cap relative to isotropic noise's (tangential_noise.h)
   int unfolded_vertices = 0;   // moved to their one-ring centroid to undo a fold
   int held_vertices = 0;       // held at kMoveRadius noise sigmas from where they were
   int restored_faces = 0;      // turned over by the smoothing, put back (step 6)

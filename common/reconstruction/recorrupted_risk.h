@@ -5,7 +5,8 @@
 // E ||f(y1) - y2||^2 = E ||f(y1) - x||^2 + a constant, for any procedure f, nonlinear steps
 // included: the procedure with the smaller mean is the one nearer the clean positions (at the
 // slightly higher noise of y1). With sigma estimated rather than known the copies are only nearly
-// independent (docs/quality.md item 20 measures the decisions this gives).
+// independent (docs/quality.md item 20 measures the decisions this gives); so they are if z's
+// shape is not the noise's: noise along the normals wants z along the normals (item 21).
 #pragma once
 
 #include "mesh/mesh_arrays.h"
@@ -23,9 +24,16 @@ struct RecorruptedRisks {
   int draws = 0;
 };
 
+// The shape of the noise z is drawn with: sigma along each vertex's unit normal and
+// sigma sqrt(tangential_share) across it; no normals: isotropic.
+struct NoiseShape {
+  Positions unit_normals;
+  double tangential_share = 1;
+};
+
 // `run(y1, first, second)` applies both procedures to y1 (false: failed, and so does this).
 // `seed` fixes the draws: the same input gives the same answer.
-bool recorrupted_risks(const Positions& y, double sigma, int draws, std::uint32_t seed,
+bool recorrupted_risks(const Positions& y, double sigma, const NoiseShape& shape, int draws, std::uint32_t seed,
                        const std::function<bool(const Positions&, Positions&, Positions&)>& run, RecorruptedRisks& risks);
 
 }  // namespace hht

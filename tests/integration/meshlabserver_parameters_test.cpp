@@ -644,6 +644,27 @@ TEST(MeshlabserverParameters, AdaptiveSmoothLogsTheFaceNormalPassChoice) {
   }
 }
 
+// Noise along the normals: the cap on slides along the surface follows the tangential noise the
+// input holds, and the log says so; isotropic noise leaves the cap, and the log, as they were.
+TEST(MeshlabserverParameters, AdaptiveSmoothLogsTheTangentialCap) {
+  const Input in = read_input("camel");
+  for (NoiseDirection direction : {NoiseDirection::Normal, NoiseDirection::Isotropic}) {
+    const bool along_normals = direction == NoiseDirection::Normal;
+    Positions noisy;
+    std::string input;
+    ASSERT_NO_FATAL_FAILURE(write_noisy("camel", in, 30.0, direction, 21, noisy, input));
+    Positions expected;
+    NoiseAdaptiveSmoothingReport report;
+    std::string error;
+    ASSERT_TRUE(noise_adaptive_smooth(noisy, in.faces, {}, expected, report, error)) << error;
+    EXPECT_EQ(report.tangential_share < 0.5, along_normals);
+    const ServerRun run = run_resource(input, "smooth.mlx", {}, along_normals ? "tangential_normal" : "tangential_iso");
+    expect_positions(saved_positions(run), expected, in.diagonal, "camel");
+    EXPECT_EQ(run.log.find("slides along the surface capped at") != std::string::npos, report.tangential_share < 1)
+        << run.log;
+  }
+}
+
 TEST(MeshlabserverParameters, GuidedDenoiseRoundsPassesSigmaIterations) {
   const NoisyInput n = noisy_fandisk("guided_input");
   GuidedNormalDenoiseOptions o;

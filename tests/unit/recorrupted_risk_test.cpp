@@ -1,6 +1,7 @@
 #include "evaluation/gaussian_noise.h"
 #include "mesh/uniform_laplacian.h"
 #include "mesh/vertex_adjacency.h"
+#include "mesh/vertex_normals.h"
 #include "reconstruction/recorrupted_risk.h"
 #include "test_meshes.h"
 
@@ -33,7 +34,7 @@ TEST(RecorruptedRisk, RanksProceduresAsTheirTrueErrorsDo) {
     return true;
   };
   RecorruptedRisks risks;
-  ASSERT_TRUE(recorrupted_risks(noisy, sigma, 3, 7, run, risks));
+  ASSERT_TRUE(recorrupted_risks(noisy, sigma, {}, 3, 7, run, risks));
   EXPECT_EQ(risks.draws, 3);
   EXPECT_LT(risks.second, risks.first);
   // The same difference as the true errors' at the copies' noise, sigma sqrt(1 + a^2), within 10%.
@@ -44,6 +45,39 @@ TEST(RecorruptedRisk, RanksProceduresAsTheirTrueErrorsDo) {
   EXPECT_NEAR(risks.first - risks.second, true_difference, 0.1 * true_difference);
 }
 
+// Noise along the normals: the smoothing's slide along the surface is error, which the risk sees
+// only if the copies' noise is along the normals too. Isotropic copies carry tangential noise the
+// input does not have, and reward the slide that removes it.
+TEST(RecorruptedRisk, DrawsTheNoiseInTheInputsShape) {
+  const test::ArrayMesh s = test::remove_faces(test::sphere(4), 9);
+  const double edge = mean_edge_length(s.positions, s.faces), sigma = 0.2 * edge;
+  const Positions noisy = add_gaussian_noise(s.positions, s.faces, 20, NoiseDirection::Normal, 3);
+  NoiseShape shape;
+  shape.unit_normals = area_weighted_vertex_normals(s.positions, s.faces).rowwise().normalized();
+  shape.tangential_share = 0;
+  // The smoothing's move, whole (it slides) and along the normals only.
+  auto along_normals = [&](const Positions& y, const Positions& smoothed) {
+    const Eigen::VectorXd amount = (smoothed - y).cwiseProduct(shape.unit_normals).rowwise().sum();
+    return Positions(y + shape.unit_normals.cwiseProduct(amount.replicate(1, 3)));
+  };
+  auto run = [&](const Positions& y1, Positions& slid, Positions& normal_only) {
+    slid = laplacian_smoothing(y1, s.faces);
+    normal_only = along_normals(y1, slid);
+    return true;
+  };
+  const Positions noisier =
+      add_gaussian_noise(s.positions, s.faces, 20 * std::sqrt(1 + kRecorruptionScale * kRecorruptionScale), NoiseDirection::Normal, 4);
+  const Positions slid = laplacian_smoothing(noisier, s.faces);
+  const double true_difference = mean_squared_error(slid, s.positions) -
+                                 mean_squared_error(along_normals(noisier, slid), s.positions);
+  ASSERT_GT(true_difference, 0);
+  RecorruptedRisks shaped, isotropic;
+  ASSERT_TRUE(recorrupted_risks(noisy, sigma, shape, 3, 7, run, shaped));
+  ASSERT_TRUE(recorrupted_risks(noisy, sigma, {}, 3, 7, run, isotropic));
+  EXPECT_LT(isotropic.first - isotropic.second, 0);  // the slide called the better
+  EXPECT_NEAR(shaped.first - shaped.second, true_difference, 0.2 * true_difference);
+}
+
 TEST(RecorruptedRisk, RefusesWhatItCannotScore) {
   const test::ArrayMesh s = test::sphere(1);
   RecorruptedRisks risks;
@@ -51,11 +85,11 @@ TEST(RecorruptedRisk, RefusesWhatItCannotScore) {
     a = b = y1;
     return true;
   };
-  EXPECT_FALSE(recorrupted_risks(s.positions, 0, 3, 1, run, risks));
-  EXPECT_FALSE(recorrupted_risks(s.positions, 0.1, 0, 1, run, risks));
-  EXPECT_FALSE(recorrupted_risks(Positions(0, 3), 0.1, 3, 1, run, risks));
+  EXPECT_FALSE(recorrupted_risks(s.positions, 0, {}, 3, 1, run, risks));
+  EXPECT_FALSE(recorrupted_risks(s.positions, 0.1, {}, 0, 1, run, risks));
+  EXPECT_FALSE(recorrupted_risks(Positions(0, 3), 0.1, {}, 3, 1, run, risks));
   auto failing = [](const Positions&, Positions&, Positions&) { return false; };
-  EXPECT_FALSE(recorrupted_risks(s.positions, 0.1, 3, 1, failing, risks));
+  EXPECT_FALSE(recorrupted_risks(s.positions, 0.1, {}, 3, 1, failing, risks));
 }
 
 }  // namespace

@@ -1,0 +1,62 @@
+#include "evaluation/gaussian_noise.h"
+#include "mesh/tangential_noise.h"
+#include "mesh/vertex_adjacency.h"
+#include "mesh/vertex_normals.h"
+#include "test_meshes.h"
+
+#include <gtest/gtest.h>
+
+namespace hht {
+namespace {
+
+// The share for noise of `level` mean edges added in `direction`, read with the clean mesh's
+// normals (the smoothing reads them from its input, averaged over a few rings).
+double share(const test::ArrayMesh& m, double level, NoiseDirection direction, double read_level = -1) {
+  const double edge = mean_edge_length(m.positions, m.faces);
+  const Positions noisy = level > 0 ? add_gaussian_noise(m.positions, m.faces, 100 * level, direction, 5) : m.positions;
+  const Positions normals = area_weighted_vertex_normals(m.positions, m.faces).rowwise().normalized();
+  return tangential_noise_share(noisy, normals, vertex_adjacency(m.faces, static_cast<int>(m.positions.rows())),
+                                (read_level > 0 ? read_level : level) * edge);
+}
+
+// Isotropic noise fills the share; noise along the normals leaves it at the triangulation's
+// own offsets, small on a regular mesh. Fails if the offsets are not projected on the tangent
+// plane (noise along the normals then reads about half) or the expectation is off.
+TEST(TangentialNoise, TellsIsotropicNoiseFromNoiseAlongTheNormals) {
+  const test::ArrayMesh s = test::sphere(5);
+  for (double level : {0.1, 0.3}) {
+    EXPECT_GT(share(s, level, NoiseDirection::Isotropic), 0.95) << level;
+    EXPECT_LT(share(s, level, NoiseDirection::Normal), 0.1) << level;
+  }
+}
+
+// An irregular triangulation's own offsets count as room for tangential noise: the share never
+// goes below 1 with isotropic noise, and stays high along the normals at 10% (cow's floor).
+TEST(TangentialNoise, AnIrregularMeshReadsItsOwnOffsets) {
+  const test::ArrayMesh cow = test::load_data_mesh("cow");
+  EXPECT_EQ(share(cow, 0.1, NoiseDirection::Isotropic), 1.0);
+  EXPECT_EQ(share(cow, 0.3, NoiseDirection::Isotropic), 1.0);
+  EXPECT_GT(share(cow, 0.1, NoiseDirection::Normal), 0.9);
+}
+
+// A vertex on a hole's rim sits off its one-sided centroid by the surface's extent, not noise:
+// counted, a sphere with holes and noise along the normals reads 1 at 10%.
+TEST(TangentialNoise, LeavesBoundaryVerticesOut) {
+  const test::ArrayMesh holes = test::remove_faces(test::sphere(5), 7);
+  EXPECT_LT(share(holes, 0.1, NoiseDirection::Normal), 0.1);
+  EXPECT_LT(share(holes, 0, NoiseDirection::Normal, 0.1), 0.1);
+}
+
+TEST(TangentialNoise, NoSigmaOrNoInteriorVertexReadsOne) {
+  const test::ArrayMesh s = test::sphere(2);
+  const Positions normals = area_weighted_vertex_normals(s.positions, s.faces).rowwise().normalized();
+  const VertexAdjacency adjacency = vertex_adjacency(s.faces, static_cast<int>(s.positions.rows()));
+  EXPECT_EQ(tangential_noise_share(s.positions, normals, adjacency, 0), 1.0);
+  Faces one(1, 3);
+  one << 0, 1, 2;
+  EXPECT_EQ(tangential_noise_share(s.positions, normals, vertex_adjacency(one, static_cast<int>(s.positions.rows())), 0.1),
+            1.0);
+}
+
+}  // namespace
+}  // namespace hht
