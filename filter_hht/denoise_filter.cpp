@@ -205,15 +205,15 @@ bool apply(FilterRun& run) {
     run.log(QString("  crease contrast of the smoothed mesh %1 (below %2: no sharp creases)%3")
                 .arg(report.crease_contrast, 0, 'f', 1).arg(hht::kCreaseContrast)
                 .arg(!report.smoothed_instead ? ""
-                     : report.smoothed_by_risk ? "; the result is the adaptive smoothing (cut-off by Stein's unbiased risk with the given noise)"
+                     : report.smoothing.cutoff_by_risk ? "; the result is the adaptive smoothing (cut-off by Stein's unbiased risk with the given noise)"
                                    : "; the result is the adaptive smoothing (cross-validated cut-off)"));
   if (report.flat_parts_refined)
     run.log("  no sharp creases read, but the mesh has exactly flat parts (its noise estimate was capped by them): "
             "a CAD part, refined all the same");
   if (report.smoothed_instead) {
-    if (const QString line = tangential_share_line(report.smoothed_tangential_share); !line.isEmpty()) run.log(line);
-    run.log(face_normal_pass_line(report.smoothed_pass_risk_scored, report.smoothed_face_normal_pass,
-                                report.smoothed_pass_risk_change));
+    if (const QString line = tangential_share_line(report.smoothing.tangential_share); !line.isEmpty()) run.log(line);
+    run.log(face_normal_pass_line(report.smoothing.pass_risk_scored, report.smoothing.face_normal_pass,
+                                report.smoothing.pass_risk_change));
     run.log("  no refinement (the surface has no sharp creases)");
   } else if (report.refine_normal_passes > 0 && o.refine_vertex_iterations > 0) {
     const int own_rounds = report.refine_own_normal_rounds, guided_rounds = report.refine_rounds - own_rounds;

@@ -247,11 +247,7 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
                                  [&](int percent, const char*) { step(40 + 59 * percent / 100, "No sharp creases: adaptive smoothing"); }))
         return false;
       report.smoothed_instead = true;
-      report.smoothed_by_risk = smoothing_report.cutoff_by_risk;
-      report.smoothed_face_normal_pass = smoothing_report.face_normal_pass;
-      report.smoothed_pass_risk_scored = smoothing_report.pass_risk_scored;
-      report.smoothed_pass_risk_change = smoothing_report.pass_risk_change;
-      report.smoothed_tangential_share = smoothing_report.tangential_share;
+      report.smoothing = smoothing_report;
       clock.done("adaptive smoothing");
       if (options.detect_features && options.show_features && !detect_features(99)) return false;
       step(100, "Done");

@@ -151,11 +151,7 @@ struct DenoiseReport {
   double crease_contrast = 0;  // of that smoothing (0: not measured)
   bool noise_free = false;     // the estimate read less than kNoiseFree: the result is the input
   bool smoothed_instead = false;  // no sharp creases: the result is the adaptive smoothing
-  bool smoothed_by_risk = false;  // its cut-off by Stein's unbiased risk (the noise was given)
-  bool smoothed_face_normal_pass = false;  // that smoothing kept its face-normal pass
-  bool smoothed_pass_risk_scored = false;  // the pass's recorrupted risk was scored
-  double smoothed_pass_risk_change = 0;     // and its change
-  double smoothed_tangential_share = 1;     // that smoothing's tangential cap share (tangential_noise.h)
+  NoiseAdaptiveSmoothingReport smoothing;  // when smoothed_instead: that smoothing's report
   bool flat_parts_refined = false;  // no sharp creases read, but flat parts: refined all the same
   bool smoothing_distorts = false;  // the noise-level smoothing moved the mesh beyond the noise: refined from the input
   int refine_rounds_asked = 0;   // given, or set by the noise

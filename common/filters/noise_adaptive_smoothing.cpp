@@ -79,21 +79,17 @@ int hold_within_noise(Positions& x, const Positions& v, double radius) {
 
 struct FinishCounts {
   int unfolded = 0, held = 0, restored = 0, unturned = 0;
-  double tangential_share = 1;
 };
 
-// Steps 3 and 4 on the solve's output `solved` for the input `v` (unit mean edge).
+// Steps 3 and 4 on the solve's output `solved` for the input `v` (unit mean edge); `share` scales
+// the cap (tangential_noise.h).
 Positions cap_and_unfold(const Positions& solved, const Positions& v, const Faces& faces, const VertexAdjacency& adjacency,
-                         double sigma, const NoiseAdaptiveSmoothingOptions& options, FinishCounts& counts) {
+                         double sigma, double share, const NoiseAdaptiveSmoothingOptions& options, FinishCounts& counts) {
   // Tangential moves capped, by as much less as the input holds less tangential noise than
   // isotropic noise of sigma would give it, except around faces the cap would leave tilted (more
   // than 60 degrees from the uncapped result's face): there the slide untangles noise-flipped
   // triangles.
   Positions x = solved;
-  const double share = options.tangential_share
-                           ? tangential_noise_share(v, smoothed_vertex_normals(v, faces, adjacency), adjacency, sigma)
-                           : 1.0;
-  counts.tangential_share = share;
   const double cap = options.tangential_cap * sigma * sigma * share * options.strength;
   const Positions normals = area_weighted_vertex_normals(x, faces);
   for (Eigen::Index i = 0; i < x.rows(); ++i) {
@@ -133,9 +129,10 @@ Positions finish_smoothing(Positions x, const Positions& v, const Faces& faces, 
 
 // The recorrupted risks of the smoothing at cut-off `mu` without the face-normal pass (first) and
 // with it (second), on breadth-first patches of a large mesh. False if a copy's solve failed.
-bool normal_pass_risks(const Positions& v, const Faces& faces, const VertexAdjacency& adjacency, double sigma,
-                       double tangential_share, double mu, double max_error, const NoiseAdaptiveSmoothingOptions& options,
-                       RecorruptedRisks& risks) {
+// `v_normals`: v's smoothed vertex normals.
+bool normal_pass_risks(const Positions& v, const Positions& v_normals, const Faces& faces,
+                       const VertexAdjacency& adjacency, double sigma, double tangential_share, double mu,
+                       double max_error, const NoiseAdaptiveSmoothingOptions& options, RecorruptedRisks& risks) {
   const bool sample = v.rows() > kPassSampleVertices;
   std::vector<int> kept;
   Faces sampled_faces;
@@ -160,7 +157,9 @@ bool normal_pass_risks(const Positions& v, const Faces& faces, const VertexAdjac
     BiharmonicLowPassReport solve;
     if (!biharmonic_low_pass(a, y1, copy_mu, options.first_order, max_error, solved, solve)) return false;
     FinishCounts counts;
-    const Positions unfolded = cap_and_unfold(solved, y1, f, a, copy_sigma, options, counts);
+    const double share =
+        options.tangential_share ? tangential_noise_share(y1, smoothed_vertex_normals(y1, f, a), a, copy_sigma) : 1.0;
+    const Positions unfolded = cap_and_unfold(solved, y1, f, a, copy_sigma, share, options, counts);
     without = finish_smoothing(unfolded, y1, f, copy_sigma, options, false, counts);
     with = finish_smoothing(unfolded, y1, f, copy_sigma, options, true, counts);
     return true;
@@ -170,7 +169,7 @@ bool normal_pass_risks(const Positions& v, const Faces& faces, const VertexAdjac
   const Positions& y = sample ? sampled_v : v;
   NoiseShape shape;
   shape.tangential_share = tangential_share;
-  if (tangential_share < 1) shape.unit_normals = smoothed_vertex_normals(y, f, a);
+  if (tangential_share < 1) shape.unit_normals = sample ? smoothed_vertex_normals(y, f, a) : v_normals;
   return recorrupted_risks(y, sigma, shape, kPassDraws, kPassSeed, run, risks);
 }
 
@@ -226,6 +225,8 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
   const Eigen::RowVector3d centre = positions.colwise().mean();
   const Positions v = (positions.rowwise() - centre) / edge;  // unit mean edge
   const VertexAdjacency adjacency = vertex_adjacency(faces, n);
+  // Vertex normals averaged over a few rings, for the cross-validation and step 3's share.
+  const Positions v_normals = smoothed_vertex_normals(v, faces, adjacency);
   clock.done("adjacency");
   // A noise-free mesh gives sigma ~ 0: mu is then capped where the filter is the identity to
   // well under a thousandth of an edge.
@@ -249,7 +250,7 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
     search.first_order = options.first_order;
     if (by_risk) search.noise_sigma = sigma;  // the positions are in mean edges
     CutoffSelection selection;
-    if (!select_cutoff(adjacency, v, smoothed_vertex_normals(v, faces, adjacency), search, selection, error,
+    if (!select_cutoff(adjacency, v, v_normals, search, selection, error,
                        [&](double done) { step(20 + static_cast<int>(10 * done), stage); }))
       return false;
     const double chosen = selection.mu / options.selection_bias;
@@ -287,7 +288,8 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
 
   step(92, "Tangential cap, unfolding and hold");
   FinishCounts counts;
-  const Positions unfolded = cap_and_unfold(x, v, faces, adjacency, sigma, options, counts);
+  const double share = options.tangential_share ? tangential_noise_share(v, v_normals, adjacency, sigma) : 1.0;
+  const Positions unfolded = cap_and_unfold(x, v, faces, adjacency, sigma, share, options, counts);
   Positions finished = finish_smoothing(unfolded, v, faces, sigma, options, false, counts);
   clock.done("cap, unfold and hold");
   if (options.face_normal_pass) {
@@ -296,7 +298,7 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
     step(94, "Face-normal pass: recorrupted risk");
     RecorruptedRisks risks;
     report.pass_risk_scored =
-        normal_pass_risks(v, faces, adjacency, sigma, counts.tangential_share, report.mu,
+        normal_pass_risks(v, v_normals, faces, adjacency, sigma, share, report.mu,
                           kSmoothingMaxError * diagonal / edge, options, risks) &&
         risks.first > 0;
     if (report.pass_risk_scored) {
@@ -308,7 +310,7 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
   }
   x = finished;
   report.unfolded_vertices = counts.unfolded;
-  report.tangential_share = counts.tangential_share;
+  report.tangential_share = share;
   report.held_vertices = counts.held;
   report.restored_faces = counts.restored;
   report.unturned_faces = counts.unturned;

@@ -523,7 +523,7 @@ TEST(MeshlabserverParameters, DenoiseWithAGivenNoiseChoosesTheCutoffByUnbiasedRi
   DenoisedInput d;
   ASSERT_NO_FATAL_FAILURE(denoise_noisy("bull", 2.0, NoiseDirection::Isotropic, o, d));
   EXPECT_TRUE(d.report.smoothed_instead);
-  EXPECT_TRUE(d.report.smoothed_by_risk);
+  EXPECT_TRUE(d.report.smoothing.cutoff_by_risk);
   const ServerRun run = run_resource(d.path, "denoise.mlx", {{"noisePercent", "2"}}, "denoise_given_noise");
   expect_positions(saved_positions(run), d.expected, d.in.diagonal, "given noise");
   EXPECT_NE(run.log.find("the adaptive smoothing (cut-off by Stein's unbiased risk with the given noise)"), std::string::npos)

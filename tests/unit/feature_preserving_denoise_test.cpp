@@ -500,7 +500,7 @@ TEST(FeaturePreservingDenoise, AGivenLightNoiseOnAnOrganicMeshIsRemovedNotTheDet
     DenoiseReport report;
     const Positions out = denoise(noisy, m.faces, given, &report);
     EXPECT_TRUE(report.smoothed_instead) << name;
-    EXPECT_TRUE(report.smoothed_by_risk) << name;
+    EXPECT_TRUE(report.smoothing.cutoff_by_risk) << name;
     EXPECT_LT(mean_face_normal_error_degrees(out, m.positions, m.faces),
               mean_face_normal_error_degrees(noisy, m.positions, m.faces)) << name;
   }
