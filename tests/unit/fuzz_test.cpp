@@ -42,19 +42,9 @@ struct FuzzMesh {
   ArrayMesh mesh;
 };
 
-ArrayMesh grid(int nx, int ny) {
-  ArrayMesh m;
-  m.positions.resize(nx * ny, 3);
-  for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) m.positions.row(j * nx + i) << i, j, 0.1 * std::sin(i + 2.0 * j);
-  m.faces.resize(2 * (nx - 1) * (ny - 1), 3);
-  int f = 0;
-  for (int j = 0; j + 1 < ny; ++j)
-    for (int i = 0; i + 1 < nx; ++i) {
-      const int a = j * nx + i, b = a + 1, c = a + nx, d = c + 1;
-      m.faces.row(f++) << a, b, d;
-      m.faces.row(f++) << a, d, c;
-    }
+ArrayMesh wavy_grid(int nx, int ny) {
+  ArrayMesh m = grid(nx, ny);
+  for (Eigen::Index v = 0; v < m.positions.rows(); ++v) m.positions(v, 2) = 0.1 * std::sin(m.positions(v, 0) + 2.0 * m.positions(v, 1));
   return m;
 }
 
@@ -86,7 +76,7 @@ FuzzMesh random_mesh(std::mt19937& rng) {
   switch (base) {
     case 0: fm.mesh = sphere(2); fm.how = "sphere"; break;
     case 1: fm.mesh = torus(1, 0.4, 14, 8); fm.how = "torus"; break;
-    case 2: fm.mesh = grid(9, 7); fm.how = "grid"; break;
+    case 2: fm.mesh = wavy_grid(9, 7); fm.how = "grid"; break;
     case 3: fm.mesh = disjoint_union(sphere(1), torus(1, 0.3, 10, 6)); fm.how = "two components"; break;
     default: fm.mesh = soup(rng); fm.how = "random soup"; break;
   }

@@ -91,18 +91,7 @@ struct Grid {
   static constexpr int n = 12;
   test::ArrayMesh mesh;
   std::vector<FeatureType> type = std::vector<FeatureType>(n * n, FeatureType::None);
-  Grid() {
-    mesh.positions.resize(n * n, 3);
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) mesh.positions.row(i * n + j) << j, i, 0;
-    mesh.faces.resize(2 * (n - 1) * (n - 1), 3);
-    int f = 0;
-    for (int i = 0; i + 1 < n; ++i)
-      for (int j = 0; j + 1 < n; ++j) {
-        mesh.faces.row(f++) << i * n + j, i * n + j + 1, (i + 1) * n + j + 1;
-        mesh.faces.row(f++) << i * n + j, (i + 1) * n + j + 1, (i + 1) * n + j;
-      }
-  }
+  Grid() : mesh(test::grid(n, n)) {}
   static int at(int i, int j) { return i * n + j; }
   void mark(int i, int j, FeatureType t = FeatureType::Edge) { type[at(i, j)] = t; }
   FeatureLines link(int min_line_length = 3) const { return link_feature_lines(mesh.positions, mesh.faces, type, min_line_length); }

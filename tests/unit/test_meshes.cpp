@@ -27,6 +27,22 @@ ArrayMesh load_data_mesh(const std::string& name) {
   return from_vcg(m);
 }
 
+ArrayMesh grid(int nx, int ny) {
+  ArrayMesh m;
+  m.positions.resize(nx * ny, 3);
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) m.positions.row(j * nx + i) << i, j, 0;
+  m.faces.resize(2 * (nx - 1) * (ny - 1), 3);
+  int f = 0;
+  for (int j = 0; j + 1 < ny; ++j)
+    for (int i = 0; i + 1 < nx; ++i) {
+      const int a = j * nx + i, b = a + 1, c = a + nx, d = c + 1;
+      m.faces.row(f++) << a, b, d;
+      m.faces.row(f++) << a, d, c;
+    }
+  return m;
+}
+
 ArrayMesh sphere(int subdivisions, double radius) {
   TriMesh m;
   vcg::tri::Sphere(m, subdivisions);

@@ -17,6 +17,9 @@ struct ArrayMesh {
 
 ArrayMesh load_data_mesh(const std::string& name);  // e.g. "fandisk" -> data/fandisk.off
 ArrayMesh sphere(int subdivisions, double radius = 1.0);
+// A flat grid in z = 0, vertex (i, j) = j * nx + i at (i, j, 0), each square split along the same
+// diagonal: an interior vertex has six neighbours, whose centroid it is.
+ArrayMesh grid(int nx, int ny);
 ArrayMesh torus(double major, double minor, int major_steps, int minor_steps);
 ArrayMesh remove_faces(const ArrayMesh& m, int every);  // drop every `every`-th face region: holes
 ArrayMesh disjoint_union(const ArrayMesh& a, const ArrayMesh& b);
