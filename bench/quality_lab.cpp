@@ -297,6 +297,7 @@ NoiseAdaptiveSmoothingOptions lab_options() {
   if (const char* x = std::getenv("LAB_STRONGEST")) o.strongest_selected = std::atof(x);
   if (const char* x = std::getenv("LAB_MOVERADIUS")) o.move_radius = std::atof(x);
   if (std::getenv("LAB_NOPASS")) o.face_normal_pass = false;  // item 20's face-normal pass off
+  if (std::getenv("LAB_NOSLIDE")) o.taubin_slide = false;  // item 22's Taubin slide off
   if (std::getenv("LAB_NOTSHARE")) o.tangential_share = false;  // item 21's tangential share off
   return o;
 }
@@ -792,6 +793,7 @@ int main(int argc, char** argv) {
     auto run = [&](int which, const Positions& in) {
       NoiseAdaptiveSmoothingOptions o = lab_options();
       o.face_normal_pass = false;  // the candidates add their own
+      o.taubin_slide = false;
       if (which == 2) o.tangential_cap = 1e9;
       Positions out;
       NoiseAdaptiveSmoothingReport r;
@@ -833,6 +835,7 @@ int main(int argc, char** argv) {
     for (Eigen::Index i = 0; i < f.rows(); ++i) for (int k = 0; k < 3; ++k) vf[f(i, k)].push_back(int(i));
     NoiseAdaptiveSmoothingOptions o = lab_options();
     o.face_normal_pass = false;  // the pass is the candidate here, applied after the whole smoothing
+    o.taubin_slide = false;
     Positions nas;
     NoiseAdaptiveSmoothingReport r;
     noise_adaptive_smooth(noisy, f, o, nas, r, err);
@@ -1916,8 +1919,8 @@ int main(int argc, char** argv) {
         if (!noise_adaptive_smooth(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); return 1; }
         char name[64];
         std::snprintf(name, sizeof name, "NAS s%.2f mu %.3f%s (%.3f)%s", strength, r.mu, r.cutoff_selected ? "*" : "", r.sigma_used,
-                      r.face_normal_pass ? " pass" : "");
-        std::printf("  face-normal pass risk change %+.5f\n", r.pass_risk_change);
+                      r.face_normal_pass ? (r.taubin_slide ? " pass slide" : " pass") : (r.taubin_slide ? " slide" : ""));
+        std::printf("  finish risk change %+.5f\n", r.finish_risk_change);
         std::printf("  tangential share %.3f\n", r.tangential_share);
         show(name, out);
         if (std::getenv("LAB_TURNED")) {  // the faces left turned against the input: their tilts from the result's surface

@@ -80,7 +80,7 @@ bool apply(FilterRun& run) {
                 .arg(report.unfolded_vertices).arg(report.held_vertices).arg(hht::kMoveRadius).arg(report.restored_faces)
                 .arg(report.unturned_faces));
   if (const QString line = tangential_share_line(report.tangential_share); !line.isEmpty()) run.log(line);
-  run.log(face_normal_pass_line(report.pass_risk_scored, report.face_normal_pass, report.pass_risk_change));
+  run.log(smoothing_finish_line(report));
   run.log(stage_times_line(report.stages));
   return true;
 }
@@ -94,7 +94,8 @@ FilterSpec adaptive_smooth_filter() {
           "then the mesh is rebuilt by a least-squares solve that keeps mu^4 / (mu^4 + mu^2 k^2 + k^4) of each frequency k of the "
           "uniform Laplacian, mu set by the noise or, where generalized cross-validation finds it better (a dense, "
           "smooth surface), a stronger one, with tangential slides capped by the noise level, and one face-normal "
-          "pass where a recorrupted-to-recorrupted risk estimate says it lowers the error. Not the paper's "
+          "pass, or Taubin Smooth's slide along the surface instead of the cap, where a recorrupted-to-recorrupted "
+          "risk estimate says it lowers the error. Not the paper's "
           "method (its curvature filter leaves stripes and keeps the noise's tangential part): see docs/quality.md "
           "for why and for how it compares with Taubin, HC Laplacian and TwoStep smoothing. A clean mesh is smoothed "
           "lightly, a clean CAD mesh with exactly flat parts not at all; the connectivity is never changed.",

@@ -212,8 +212,7 @@ bool apply(FilterRun& run) {
             "a CAD part, refined all the same");
   if (report.smoothed_instead) {
     if (const QString line = tangential_share_line(report.smoothing.tangential_share); !line.isEmpty()) run.log(line);
-    run.log(face_normal_pass_line(report.smoothing.pass_risk_scored, report.smoothing.face_normal_pass,
-                                report.smoothing.pass_risk_change));
+    run.log(smoothing_finish_line(report.smoothing));
     run.log("  no refinement (the surface has no sharp creases)");
   } else if (report.refine_normal_passes > 0 && o.refine_vertex_iterations > 0) {
     const int own_rounds = report.refine_own_normal_rounds, guided_rounds = report.refine_rounds - own_rounds;

@@ -70,12 +70,20 @@ QString stage_times_line(const std::vector<hht::StageTime>& stages) {
   return line + QString(" total %1").arg(total, 0, 'f', 3);
 }
 
-QString face_normal_pass_line(bool scored, bool kept, double risk_change) {
-  if (!scored) return "  face-normal pass left out: its risk could not be scored (a copy's smoothing did not converge)";
-  return QString("  face-normal pass %1: the smoothing's recorrupted risk with it is %2% %3 than without it")
-      .arg(kept ? "kept" : "left out")
-      .arg(100 * std::abs(risk_change), 0, 'g', 2)
-      .arg(risk_change < 0 ? "lower" : "higher");
+QString smoothing_finish_line(const hht::NoiseAdaptiveSmoothingReport& report) {
+  const QString chosen = QString("slides along the surface %1, face-normal pass %2")
+                             .arg(report.taubin_slide ? "by Taubin's smoothing" : "capped")
+                             .arg(report.face_normal_pass ? "kept" : "left out");
+  if (report.finishes_scored < 2) return "  finish: " + chosen;
+  if (!report.finish_risk_scored)
+    return "  finish: " + chosen + " (the finishes' risks could not be scored: a copy's smoothing did not converge)";
+  return QString("  finish chosen by recorrupted risk among %1: %2 (%3)")
+      .arg(report.finishes_scored)
+      .arg(chosen)
+      .arg(report.finish_risk_change < 0
+               ? QString("its risk %1% below that of the capped slides without the pass")
+                     .arg(-100 * report.finish_risk_change, 0, 'g', 2)
+               : QString("the lowest risk"));
 }
 
 QString tangential_share_line(double share) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "cycle/cycle_decomposition.h"
+#include "filters/noise_adaptive_smoothing.h"
 #include "mesh/mesh_arrays.h"
 #include "signal/noise_estimate.h"
 #include "util/stage_clock.h"
@@ -52,9 +53,10 @@ QString stage_times_line(const std::vector<hht::StageTime>& stages);
 // it, both readings and what the cap means.
 QString noise_estimate_text(const hht::NoiseEstimate& estimate);
 
-// "  face-normal pass kept: the smoothing's recorrupted risk with it is 0.15% lower than without it" (or
-// "left out" and "higher"; or that it could not be scored).
-QString face_normal_pass_line(bool scored, bool kept, double risk_change);
+// How the adaptive smoothing was finished (steps 3 and 4b): "  finish chosen by recorrupted risk
+// among 4: slides along the surface by Taubin's smoothing, face-normal pass kept (its risk 2.1%
+// below that of the capped slides without the pass)", or that the risks could not be scored.
+QString smoothing_finish_line(const hht::NoiseAdaptiveSmoothingReport& report);
 // The smoothing's tangential cap when the input holds less tangential noise than isotropic noise
 // (share below 1; tangential_noise.h); empty otherwise.
 QString tangential_share_line(double share);

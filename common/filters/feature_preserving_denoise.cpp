@@ -206,7 +206,8 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     smoothing.noise = sigma;
     smoothing.select_cutoff = false;  // the noise level's cut-off: the refinement was measured from it
     smoothing.unturn_wrinkles = false;  // the tangle test counts the faces this smoothing turns
-    smoothing.face_normal_pass = false;  // the refinement was measured from the smoothing without it
+    smoothing.face_normal_pass = false;  // the refinement was measured from the smoothing without them
+    smoothing.taubin_slide = false;
     smoothing.first_order = options.untangle_first_order;
     smoothing.mu_scale = options.untangle_mu_scale;
     NoiseAdaptiveSmoothingReport smoothing_report;

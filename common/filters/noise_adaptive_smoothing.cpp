@@ -11,9 +11,11 @@
 #include "reconstruction/face_normal_pass.h"
 #include "reconstruction/flip_guard.h"
 #include "reconstruction/recorrupted_risk.h"
+#include "reconstruction/taubin_smoothing.h"
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace hht {
 
@@ -81,10 +83,10 @@ struct FinishCounts {
   int unfolded = 0, held = 0, restored = 0, unturned = 0;
 };
 
-// Steps 3 and 4 on the solve's output `solved` for the input `v` (unit mean edge); `share` scales
-// the cap (tangential_noise.h).
-Positions cap_and_unfold(const Positions& solved, const Positions& v, const Faces& faces, const VertexAdjacency& adjacency,
-                         double sigma, double share, const NoiseAdaptiveSmoothingOptions& options, FinishCounts& counts) {
+// Step 3 by the cap, on the solve's output `solved` for the input `v` (unit mean edge); `share`
+// scales the cap (tangential_noise.h).
+Positions capped_slides(const Positions& solved, const Positions& v, const Faces& faces, double sigma, double share,
+                        const NoiseAdaptiveSmoothingOptions& options) {
   // Tangential moves capped, by as much less as the input holds less tangential noise than
   // isotropic noise of sigma would give it, except around faces the cap would leave tilted (more
   // than 60 degrees from the uncapped result's face): there the slide untangles noise-flipped
@@ -113,26 +115,78 @@ Positions cap_and_unfold(const Positions& solved, const Positions& v, const Face
     }
     if (!changed) break;
   }
-  counts.unfolded = unfold(x, faces, adjacency);
   return x;
 }
 
-// Step 4b when `normal_pass`, then steps 5-7, on the output `x` of cap_and_unfold.
-Positions finish_smoothing(Positions x, const Positions& v, const Faces& faces, double sigma,
-                           const NoiseAdaptiveSmoothingOptions& options, bool normal_pass, FinishCounts& counts) {
-  if (normal_pass) x = face_normal_pass(x, faces);
+// Step 3 by Taubin's slide: the solve's move along `unit_normals` (v's smoothed vertex normals),
+// Taubin's smoothing's move across them, uncapped.
+Positions taubin_slides(const Positions& solved, const Positions& v, const Positions& unit_normals,
+                        const VertexAdjacency& adjacency) {
+  const Positions taubin = taubin_smoothing(adjacency, v);
+  Positions x(v.rows(), 3);
+  for (Eigen::Index i = 0; i < v.rows(); ++i) {
+    const Eigen::RowVector3d normal = unit_normals.row(i);
+    const Eigen::RowVector3d along = (solved.row(i) - v.row(i)).dot(normal) * normal, slide = taubin.row(i) - v.row(i);
+    x.row(i) = v.row(i) + along + slide - slide.dot(normal) * normal;
+  }
+  return x;
+}
+
+// How steps 3 and 4b are done; step 4b's recorrupted risk chooses among those the options allow.
+struct Finish {
+  bool taubin_slide = false;  // step 3 by Taubin's slide, not by the cap
+  bool normal_pass = false;   // step 4b
+};
+
+std::vector<Finish> allowed_finishes(const NoiseAdaptiveSmoothingOptions& options, double share) {
+  // Where the input holds less tangential noise than isotropic noise of sigma (share < 1), the
+  // slide would be mostly error, and the copies' risk cannot see it: their tangential noise is
+  // drawn at the share, which the triangulation's own offsets fill (docs/quality.md item 22).
+  const bool slide_allowed = options.taubin_slide && share >= 1;
+  std::vector<Finish> finishes;
+  for (bool slide : {false, true})
+    for (bool pass : {false, true})
+      if ((!slide || slide_allowed) && (!pass || options.face_normal_pass)) finishes.push_back({slide, pass});
+  return finishes;
+}
+
+// The finish of least mean risk, but Taubin's slide only if every draw scores it below the best
+// capped finish: its choice hangs on the tangential noise, which the copies only know as well as
+// sigma's estimate, and where one draw says otherwise it is a near tie that the draws decide (lab:
+// 58 of 66 organic cases below Taubin on both numbers, against 57 by the mean alone;
+// docs/quality.md item 22).
+size_t slide_or_cap(const std::vector<Finish>& finishes, const RecorruptedRisks& risks) {
+  size_t best = 0, capped = 0;
+  for (size_t k = 0; k < finishes.size(); ++k) {
+    if (risks.risk[k] < risks.risk[best]) best = k;
+    if (!finishes[k].taubin_slide && risks.risk[k] < risks.risk[capped]) capped = k;
+  }
+  for (const std::vector<double>& draw : risks.per_draw)
+    if (draw[best] >= draw[capped]) return capped;
+  return best;
+}
+
+// Steps 3-7 on the solve's output `solved` for the input `v`; `v_normals`: v's smoothed vertex
+// normals.
+Positions finish_smoothing(const Positions& solved, const Positions& v, const Positions& v_normals, const Faces& faces,
+                           const VertexAdjacency& adjacency, double sigma, double share, const Finish& finish,
+                           const NoiseAdaptiveSmoothingOptions& options, FinishCounts& counts) {
+  Positions x = finish.taubin_slide ? taubin_slides(solved, v, v_normals, adjacency)
+                                    : capped_slides(solved, v, faces, sigma, share, options);
+  counts.unfolded = unfold(x, faces, adjacency);
+  if (finish.normal_pass) x = face_normal_pass(x, faces);
   counts.held = hold_within_noise(x, v, options.move_radius * sigma * std::max(1.0, options.strength));
   counts.restored = restore_turned_faces_that_fit(v, faces, kRestoredFaceTilt, x);
   counts.unturned = options.unturn_wrinkles ? unturn_few_turned_faces(v, faces, kWrinkleShare, x) : 0;
   return x;
 }
 
-// The recorrupted risks of the smoothing at cut-off `mu` without the face-normal pass (first) and
-// with it (second), on breadth-first patches of a large mesh. False if a copy's solve failed.
-// `v_normals`: v's smoothed vertex normals.
-bool normal_pass_risks(const Positions& v, const Positions& v_normals, const Faces& faces,
-                       const VertexAdjacency& adjacency, double sigma, double tangential_share, double mu,
-                       double max_error, const NoiseAdaptiveSmoothingOptions& options, RecorruptedRisks& risks) {
+// The recorrupted risks of the smoothing at cut-off `mu` with each of `finishes`, on breadth-first
+// patches of a large mesh. False if a copy's solve failed. `v_normals`: v's smoothed vertex normals.
+bool finish_risks(const Positions& v, const Positions& v_normals, const Faces& faces, const VertexAdjacency& adjacency,
+                  double sigma, double tangential_share, double mu, double max_error,
+                  const NoiseAdaptiveSmoothingOptions& options, const std::vector<Finish>& finishes,
+                  RecorruptedRisks& risks) {
   const bool sample = v.rows() > kPassSampleVertices;
   std::vector<int> kept;
   Faces sampled_faces;
@@ -152,16 +206,17 @@ bool normal_pass_risks(const Positions& v, const Positions& v_normals, const Fac
   // favours the pass (lab: 52 of the 66 organic cases below Taubin on both numbers, against 53).
   const double copy_sigma = sigma * std::sqrt(1 + kRecorruptionScale * kRecorruptionScale);
   const double copy_mu = mu / std::sqrt(copy_sigma / sigma);
-  auto run = [&](const Positions& y1, Positions& without, Positions& with) {
+  auto run = [&](const Positions& y1, std::vector<Positions>& outputs) {
     Positions solved;
     BiharmonicLowPassReport solve;
     if (!biharmonic_low_pass(a, y1, copy_mu, options.first_order, max_error, solved, solve)) return false;
-    FinishCounts counts;
-    const double share =
-        options.tangential_share ? tangential_noise_share(y1, smoothed_vertex_normals(y1, f, a), a, copy_sigma) : 1.0;
-    const Positions unfolded = cap_and_unfold(solved, y1, f, a, copy_sigma, share, options, counts);
-    without = finish_smoothing(unfolded, y1, f, copy_sigma, options, false, counts);
-    with = finish_smoothing(unfolded, y1, f, copy_sigma, options, true, counts);
+    const Positions y1_normals = smoothed_vertex_normals(y1, f, a);
+    const double share = options.tangential_share ? tangential_noise_share(y1, y1_normals, a, copy_sigma) : 1.0;
+    outputs.clear();
+    for (const Finish& finish : finishes) {
+      FinishCounts counts;
+      outputs.push_back(finish_smoothing(solved, y1, y1_normals, f, a, copy_sigma, share, finish, options, counts));
+    }
     return true;
   };
   // The copies' noise has the input's shape: with little tangential noise (noise along the
@@ -286,29 +341,31 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
   }
   clock.done("solve");
 
-  step(92, "Tangential cap, unfolding and hold");
-  FinishCounts counts;
   const double share = options.tangential_share ? tangential_noise_share(v, v_normals, adjacency, sigma) : 1.0;
-  const Positions unfolded = cap_and_unfold(x, v, faces, adjacency, sigma, share, options, counts);
-  Positions finished = finish_smoothing(unfolded, v, faces, sigma, options, false, counts);
-  clock.done("cap, unfold and hold");
-  if (options.face_normal_pass) {
-    // Scored on recorrupted copies, smoothed with the pass and without. A copy whose solve does
-    // not converge leaves the pass out: the smoothing itself is done.
-    step(94, "Face-normal pass: recorrupted risk");
+  const std::vector<Finish> finishes = allowed_finishes(options, share);
+  Finish chosen = finishes.front();
+  if (finishes.size() > 1) {
+    // Scored on recorrupted copies, smoothed with each finish. A copy whose solve does not
+    // converge leaves the plain finish: the smoothing itself is done.
+    step(92, "Finish: recorrupted risk");
     RecorruptedRisks risks;
-    report.pass_risk_scored =
-        normal_pass_risks(v, v_normals, faces, adjacency, sigma, share, report.mu,
-                          kSmoothingMaxError * diagonal / edge, options, risks) &&
-        risks.first > 0;
-    if (report.pass_risk_scored) {
-      report.pass_risk_change = (risks.second - risks.first) / risks.first;
-      report.face_normal_pass = risks.second < risks.first;
+    report.finish_risk_scored = finish_risks(v, v_normals, faces, adjacency, sigma, share, report.mu,
+                                             kSmoothingMaxError * diagonal / edge, options, finishes, risks) &&
+                                risks.risk[0] > 0;
+    if (report.finish_risk_scored) {
+      const size_t best = slide_or_cap(finishes, risks);
+      chosen = finishes[best];
+      report.finish_risk_change = risks.risk[best] / risks.risk[0] - 1;
     }
-    if (report.face_normal_pass) finished = finish_smoothing(unfolded, v, faces, sigma, options, true, counts);
-    clock.done("face-normal pass");
+    report.finishes_scored = static_cast<int>(finishes.size());
+    clock.done("finish risk");
   }
-  x = finished;
+  step(97, chosen.taubin_slide ? "Taubin's slide, unfolding and hold" : "Tangential cap, unfolding and hold");
+  FinishCounts counts;
+  x = finish_smoothing(x, v, v_normals, faces, adjacency, sigma, share, chosen, options, counts);
+  clock.done("finish");
+  report.face_normal_pass = chosen.normal_pass;
+  report.taubin_slide = chosen.taubin_slide;
   report.unfolded_vertices = counts.unfolded;
   report.tangential_share = share;
   report.held_vertices = counts.held;

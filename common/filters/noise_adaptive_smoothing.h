@@ -30,14 +30,19 @@
 //      is error (ours, docs/quality.md item 21);
 //   4. faces left folded against the surface around them get their vertices moved to their
 //      one-ring centroids;
-//   4b. each face's normal is replaced by the mean of its neighbours' and the vertices follow
-//      (face_normal_pass.h), where that lowers the error as a recorrupted risk estimate tells it
-//      (recorrupted_risk.h): the smoothing is rerun, with the pass and without, on a copy of the
-//      input with more noise added (at the cut-off the law gives that noise), and both results
-//      are compared with a second copy whose noise is independent of the first's (three draws).
-//      Well-shaped meshes keep it (small faces stand up that
-//      the cap of step 3 left tilted), coarse meshes with detail at the edge scale and CAD parts
-//      with creases do not (ours, docs/quality.md item 20);
+//   4b. the finish is chosen by a recorrupted risk estimate (recorrupted_risk.h): the smoothing is
+//      rerun on a copy of the input with more noise added (at the cut-off the law gives that
+//      noise) and finished each way allowed, and the results are compared with a second copy whose
+//      noise is independent of the first's (three draws). The ways: with each face's normal
+//      replaced by the mean of its neighbours' and the vertices following (face_normal_pass.h) or
+//      not: well-shaped meshes keep it (small faces stand up that the cap of step 3 left tilted),
+//      coarse meshes with detail at the edge scale and CAD parts with creases do not (ours,
+//      docs/quality.md item 20); and, where the input's tangential offsets hold at least isotropic
+//      noise's (the share of step 3 is 1), step 3 by Taubin's slide instead of the cap (the move
+//      along the normals the solve's, the move across them Taubin's smoothing's,
+//      taubin_smoothing.h): its sharp roll-off takes out the finest tangential noise and drifts
+//      less than a strong low-pass, which smooth regular meshes want (ours, docs/quality.md
+//      item 22);
 //   5. no vertex ends further than kMoveRadius * sigma * max(1, strength) mean edges from where
 //      it was: Gaussian noise moved it by more than 4 sigma with a probability of about 0.1%
 //      (3 degrees of freedom), while the uniform Laplacian moves a vertex with long edges (a
@@ -110,6 +115,7 @@ struct NoiseAdaptiveSmoothingOptions {
   bool unbiased_risk = false;  // `noise` is the truth (the user's): the cut-off by Stein's unbiased risk instead
   bool unturn_wrinkles = true;  // step 7 (the denoiser's untangling counts the smoothing's own turns)
   bool face_normal_pass = true;  // step 4b where its risk is lower (the denoiser's untangling: off)
+  bool taubin_slide = true;      // step 3 by Taubin's slide where its risk is lower (the untangling: off)
   bool tangential_share = true;  // step 3's cap scaled by the tangential noise the offsets allow (experiments: off)
   // Experiments (bench/quality_lab, docs/quality.md items 8-10): the tangential cap's factor
   // (infinity: no cap), the noise law's scale, how much weaker than the noise law's cut-off the
@@ -145,8 +151,10 @@ struct NoiseAdaptiveSmoothingReport {
   int restored_faces = 0;      // turned over by the smoothing, put back (step 6)
   int unturned_faces = 0;      // still turned, few: moved back until no longer turned (step 7)
   bool face_normal_pass = false;  // step 4b was kept
-  bool pass_risk_scored = false;  // its risk was scored (false: not asked for, or a copy's solve failed)
-  double pass_risk_change = 0;    // its recorrupted risk relative to the risk without it, minus 1
+  bool taubin_slide = false;      // step 3 took Taubin's slide instead of the cap
+  int finishes_scored = 0;        // finishes (step 3's two ways, with step 4b or not) scored against each other
+  bool finish_risk_scored = false;  // their risks were scored (false: one finish allowed, or a copy's solve failed)
+  double finish_risk_change = 0;  // the chosen finish's recorrupted risk over the plain one's (cap, no pass), minus 1
   int iterations = 0;          // conjugate gradient iterations of the solve
   double error_bound = 0;      // largest position error of the solve, at most, / bbox diagonal
   std::vector<StageTime> stages;

@@ -7,7 +7,8 @@
 namespace hht {
 
 bool recorrupted_risks(const Positions& y, double sigma, const NoiseShape& shape, int draws, std::uint32_t seed,
-                       const std::function<bool(const Positions&, Positions&, Positions&)>& run, RecorruptedRisks& risks) {
+                       const std::function<bool(const Positions&, std::vector<Positions>&)>& run,
+                       RecorruptedRisks& risks) {
   risks = RecorruptedRisks{};
   if (y.rows() == 0 || draws < 1 || !(sigma > 0)) return false;
   const bool shaped = shape.unit_normals.rows() == y.rows() && shape.tangential_share < 1;
@@ -24,14 +25,18 @@ bool recorrupted_risks(const Positions& y, double sigma, const NoiseShape& shape
         z.row(i) = along + across * (z.row(i) - along);
       }
     const Positions y1 = y + kRecorruptionScale * z, y2 = y - z / kRecorruptionScale;
-    Positions first, second;
-    if (!run(y1, first, second) || first.rows() != y.rows() || second.rows() != y.rows()) return false;
-    risks.first += (first - y2).squaredNorm() / static_cast<double>(y.rows());
-    risks.second += (second - y2).squaredNorm() / static_cast<double>(y.rows());
+    std::vector<Positions> outputs;
+    if (!run(y1, outputs) || outputs.empty() || (d > 0 && outputs.size() != risks.risk.size())) return false;
+    risks.risk.resize(outputs.size(), 0.0);
+    std::vector<double>& draw = risks.per_draw.emplace_back(outputs.size());
+    for (size_t p = 0; p < outputs.size(); ++p) {
+      if (outputs[p].rows() != y.rows()) return false;
+      draw[p] = (outputs[p] - y2).squaredNorm() / static_cast<double>(y.rows());
+      risks.risk[p] += draw[p];
+    }
     ++risks.draws;
   }
-  risks.first /= draws;
-  risks.second /= draws;
+  for (double& r : risks.risk) r /= draws;
   return true;
 }
 

@@ -624,24 +624,41 @@ TEST(MeshlabserverParameters, AdaptiveSmoothStrengthNoiseAndEmd) {
   }
 }
 
-// smooth.mlx keeps the face-normal pass where its recorrupted risk is lower (camel, well-shaped)
-// and leaves it out where it is higher (cow, coarse), as the library does, and logs the choice.
-TEST(MeshlabserverParameters, AdaptiveSmoothLogsTheFaceNormalPassChoice) {
-  for (const char* mesh : {"camel", "cow"}) {
-    const Input in = read_input(mesh);
+// smooth.mlx finishes as the library does, by the recorrupted risk of its four finishes (docs/quality.md
+// items 20 and 22), and logs the choice: at 10% the face-normal pass kept on camel (well-shaped) and
+// left out on cow (coarse), the slides capped on cow; at 20% camel takes Taubin's slide.
+TEST(MeshlabserverParameters, AdaptiveSmoothLogsTheFinishChoice) {
+  struct Case {
+    const char* mesh;
+    double percent;
+  };
+  bool slid = false, capped = false;
+  for (const Case& c : {Case{"camel", 10}, Case{"cow", 10}, Case{"camel", 20}}) {
+    const std::string tag = std::string(c.mesh) + std::to_string(static_cast<int>(c.percent));
+    const Input in = read_input(c.mesh);
     Positions noisy;
     std::string input;
-    ASSERT_NO_FATAL_FAILURE(write_noisy(mesh, in, 10.0, NoiseDirection::Isotropic, 21, noisy, input));
+    ASSERT_NO_FATAL_FAILURE(write_noisy(c.mesh, in, c.percent, NoiseDirection::Isotropic, 21, noisy, input));
     Positions expected;
     NoiseAdaptiveSmoothingReport report;
     std::string error;
     ASSERT_TRUE(noise_adaptive_smooth(noisy, in.faces, {}, expected, report, error)) << error;
-    EXPECT_EQ(report.face_normal_pass, std::string(mesh) == "camel") << mesh;
-    const ServerRun run = run_resource(input, "smooth.mlx", {}, std::string("adaptive_pass_") + mesh);
-    expect_positions(saved_positions(run), expected, in.diagonal, mesh);
+    if (c.percent == 10) {
+      EXPECT_EQ(report.face_normal_pass, std::string(c.mesh) == "camel") << tag;
+    }
+    (report.taubin_slide ? slid : capped) = true;
+    const ServerRun run = run_resource(input, "smooth.mlx", {}, "adaptive_finish_" + tag);
+    expect_positions(saved_positions(run), expected, in.diagonal, tag);
+    EXPECT_NE(run.log.find("finish chosen by recorrupted risk among 4"), std::string::npos) << run.log;
     EXPECT_NE(run.log.find(report.face_normal_pass ? "face-normal pass kept" : "face-normal pass left out"), std::string::npos)
         << run.log;
+    EXPECT_NE(run.log.find(report.taubin_slide ? "slides along the surface by Taubin's smoothing"
+                                               : "slides along the surface capped"),
+              std::string::npos)
+        << run.log;
   }
+  EXPECT_TRUE(slid);
+  EXPECT_TRUE(capped);
 }
 
 // Noise along the normals: the cap on slides along the surface follows the tangential noise the

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <vector>
+
 namespace hht {
 namespace {
 
@@ -28,21 +30,21 @@ TEST(RecorruptedRisk, RanksProceduresAsTheirTrueErrorsDo) {
   const test::ArrayMesh s = test::sphere(4);
   const double edge = mean_edge_length(s.positions, s.faces), sigma = 0.2 * edge;
   const Positions noisy = add_gaussian_noise(s.positions, s.faces, 20, NoiseDirection::Isotropic, 3);
-  auto run = [&](const Positions& y1, Positions& identity, Positions& smoothed) {
-    identity = y1;
-    smoothed = laplacian_smoothing(y1, s.faces);
+  auto run = [&](const Positions& y1, std::vector<Positions>& outputs) {
+    outputs = {y1, laplacian_smoothing(y1, s.faces)};  // the identity and the smoothing
     return true;
   };
   RecorruptedRisks risks;
   ASSERT_TRUE(recorrupted_risks(noisy, sigma, {}, 3, 7, run, risks));
   EXPECT_EQ(risks.draws, 3);
-  EXPECT_LT(risks.second, risks.first);
+  ASSERT_EQ(risks.risk.size(), 2u);
+  EXPECT_LT(risks.risk[1], risks.risk[0]);
   // The same difference as the true errors' at the copies' noise, sigma sqrt(1 + a^2), within 10%.
   const Positions noisier =
       add_gaussian_noise(s.positions, s.faces, 20 * std::sqrt(1 + kRecorruptionScale * kRecorruptionScale), NoiseDirection::Isotropic, 4);
   const double true_difference = mean_squared_error(noisier, s.positions) -
                                  mean_squared_error(laplacian_smoothing(noisier, s.faces), s.positions);
-  EXPECT_NEAR(risks.first - risks.second, true_difference, 0.1 * true_difference);
+  EXPECT_NEAR(risks.risk[0] - risks.risk[1], true_difference, 0.1 * true_difference);
 }
 
 // Noise along the normals: the smoothing's slide along the surface is error, which the risk sees
@@ -60,9 +62,9 @@ TEST(RecorruptedRisk, DrawsTheNoiseInTheInputsShape) {
     const Eigen::VectorXd amount = (smoothed - y).cwiseProduct(shape.unit_normals).rowwise().sum();
     return Positions(y + shape.unit_normals.cwiseProduct(amount.replicate(1, 3)));
   };
-  auto run = [&](const Positions& y1, Positions& slid, Positions& normal_only) {
-    slid = laplacian_smoothing(y1, s.faces);
-    normal_only = along_normals(y1, slid);
+  auto run = [&](const Positions& y1, std::vector<Positions>& outputs) {
+    const Positions slid = laplacian_smoothing(y1, s.faces);
+    outputs = {slid, along_normals(y1, slid)};
     return true;
   };
   const Positions noisier =
@@ -74,22 +76,33 @@ TEST(RecorruptedRisk, DrawsTheNoiseInTheInputsShape) {
   RecorruptedRisks shaped, isotropic;
   ASSERT_TRUE(recorrupted_risks(noisy, sigma, shape, 3, 7, run, shaped));
   ASSERT_TRUE(recorrupted_risks(noisy, sigma, {}, 3, 7, run, isotropic));
-  EXPECT_LT(isotropic.first - isotropic.second, 0);  // the slide called the better
-  EXPECT_NEAR(shaped.first - shaped.second, true_difference, 0.2 * true_difference);
+  EXPECT_LT(isotropic.risk[0] - isotropic.risk[1], 0);  // the slide called the better
+  EXPECT_NEAR(shaped.risk[0] - shaped.risk[1], true_difference, 0.2 * true_difference);
 }
 
 TEST(RecorruptedRisk, RefusesWhatItCannotScore) {
   const test::ArrayMesh s = test::sphere(1);
   RecorruptedRisks risks;
-  auto run = [](const Positions& y1, Positions& a, Positions& b) {
-    a = b = y1;
+  auto run = [](const Positions& y1, std::vector<Positions>& outputs) {
+    outputs = {y1, y1};
     return true;
   };
   EXPECT_FALSE(recorrupted_risks(s.positions, 0, {}, 3, 1, run, risks));
   EXPECT_FALSE(recorrupted_risks(s.positions, 0.1, {}, 0, 1, run, risks));
   EXPECT_FALSE(recorrupted_risks(Positions(0, 3), 0.1, {}, 3, 1, run, risks));
-  auto failing = [](const Positions&, Positions&, Positions&) { return false; };
+  auto failing = [](const Positions&, std::vector<Positions>&) { return false; };
   EXPECT_FALSE(recorrupted_risks(s.positions, 0.1, {}, 3, 1, failing, risks));
+  auto none = [](const Positions&, std::vector<Positions>& outputs) {
+    outputs.clear();
+    return true;
+  };
+  EXPECT_FALSE(recorrupted_risks(s.positions, 0.1, {}, 3, 1, none, risks));
+  int calls = 0;
+  auto changing = [&](const Positions& y1, std::vector<Positions>& outputs) {  // a procedure fewer on the second draw
+    outputs.assign(++calls == 1 ? 2 : 1, y1);
+    return true;
+  };
+  EXPECT_FALSE(recorrupted_risks(s.positions, 0.1, {}, 3, 1, changing, risks));
 }
 
 }  // namespace
