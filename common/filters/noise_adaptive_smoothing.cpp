@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 namespace hht {
@@ -155,26 +156,32 @@ std::vector<Finish> allowed_finishes(const NoiseAdaptiveSmoothingOptions& option
 // sigma's estimate, and where one draw says otherwise it is a near tie that the draws decide (lab:
 // 58 of 66 organic cases below Taubin on both numbers, against 57 by the mean alone;
 // docs/quality.md item 22).
-size_t slide_or_cap(const std::vector<Finish>& finishes, const RecorruptedRisks& risks) {
+size_t slide_or_cap(const std::vector<Finish>& finishes, const RecorruptedRisks& risks, const std::vector<double>& mean) {
   size_t best = 0, capped = 0;
   for (size_t k = 0; k < finishes.size(); ++k) {
-    if (risks.risk[k] < risks.risk[best]) best = k;
-    if (!finishes[k].taubin_slide && risks.risk[k] < risks.risk[capped]) capped = k;
+    if (mean[k] < mean[best]) best = k;
+    if (!finishes[k].taubin_slide && mean[k] < mean[capped]) capped = k;
   }
   for (const std::vector<double>& draw : risks.per_draw)
     if (draw[best] >= draw[capped]) return capped;
   return best;
 }
 
-// Steps 3-7 on the solve's output `solved` for the input `v`; `v_normals`: v's smoothed vertex
-// normals.
-Positions finish_smoothing(const Positions& solved, const Positions& v, const Positions& v_normals, const Faces& faces,
-                           const VertexAdjacency& adjacency, double sigma, double share, const Finish& finish,
-                           const NoiseAdaptiveSmoothingOptions& options, FinishCounts& counts) {
-  Positions x = finish.taubin_slide ? taubin_slides(solved, v, v_normals, adjacency)
-                                    : capped_slides(solved, v, faces, sigma, share, options);
+// Step 3, Taubin's slide or the cap, and step 4 on the solve's output `solved` for the input `v`;
+// `v_normals`: v's smoothed vertex normals.
+Positions slid_and_unfolded(const Positions& solved, const Positions& v, const Positions& v_normals, const Faces& faces,
+                            const VertexAdjacency& adjacency, double sigma, double share, bool taubin_slide,
+                            const NoiseAdaptiveSmoothingOptions& options, FinishCounts& counts) {
+  Positions x = taubin_slide ? taubin_slides(solved, v, v_normals, adjacency)
+                             : capped_slides(solved, v, faces, sigma, share, options);
   counts.unfolded = unfold(x, faces, adjacency);
-  if (finish.normal_pass) x = face_normal_pass(x, faces);
+  return x;
+}
+
+// Step 4b when `normal_pass`, then steps 5-7, on the output `x` of slid_and_unfolded.
+Positions finish_smoothing(Positions x, const Positions& v, const Faces& faces, double sigma, bool normal_pass,
+                           const NoiseAdaptiveSmoothingOptions& options, FinishCounts& counts) {
+  if (normal_pass) x = face_normal_pass(x, faces);
   counts.held = hold_within_noise(x, v, options.move_radius * sigma * std::max(1.0, options.strength));
   counts.restored = restore_turned_faces_that_fit(v, faces, kRestoredFaceTilt, x);
   counts.unturned = options.unturn_wrinkles ? unturn_few_turned_faces(v, faces, kWrinkleShare, x) : 0;
@@ -212,10 +219,14 @@ bool finish_risks(const Positions& v, const Positions& v_normals, const Faces& f
     if (!biharmonic_low_pass(a, y1, copy_mu, options.first_order, max_error, solved, solve)) return false;
     const Positions y1_normals = smoothed_vertex_normals(y1, f, a);
     const double share = options.tangential_share ? tangential_noise_share(y1, y1_normals, a, copy_sigma) : 1.0;
+    // Step 3 once each way (the finishes with and without the pass share it).
+    std::optional<Positions> slid[2];
+    FinishCounts counts;
     outputs.clear();
     for (const Finish& finish : finishes) {
-      FinishCounts counts;
-      outputs.push_back(finish_smoothing(solved, y1, y1_normals, f, a, copy_sigma, share, finish, options, counts));
+      std::optional<Positions>& x = slid[finish.taubin_slide];
+      if (!x) x = slid_and_unfolded(solved, y1, y1_normals, f, a, copy_sigma, share, finish.taubin_slide, options, counts);
+      outputs.push_back(finish_smoothing(*x, y1, f, copy_sigma, finish.normal_pass, options, counts));
     }
     return true;
   };
@@ -350,19 +361,21 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
     step(92, "Finish: recorrupted risk");
     RecorruptedRisks risks;
     report.finish_risk_scored = finish_risks(v, v_normals, faces, adjacency, sigma, share, report.mu,
-                                             kSmoothingMaxError * diagonal / edge, options, finishes, risks) &&
-                                risks.risk[0] > 0;
+                                             kSmoothingMaxError * diagonal / edge, options, finishes, risks);
+    const std::vector<double> mean = report.finish_risk_scored ? risks.mean() : std::vector<double>{};
+    report.finish_risk_scored = report.finish_risk_scored && mean[0] > 0;
     if (report.finish_risk_scored) {
-      const size_t best = slide_or_cap(finishes, risks);
+      const size_t best = slide_or_cap(finishes, risks, mean);
       chosen = finishes[best];
-      report.finish_risk_change = risks.risk[best] / risks.risk[0] - 1;
+      report.finish_risk_change = mean[best] / mean[0] - 1;
     }
     report.finishes_scored = static_cast<int>(finishes.size());
     clock.done("finish risk");
   }
   step(97, chosen.taubin_slide ? "Taubin's slide, unfolding and hold" : "Tangential cap, unfolding and hold");
   FinishCounts counts;
-  x = finish_smoothing(x, v, v_normals, faces, adjacency, sigma, share, chosen, options, counts);
+  x = finish_smoothing(slid_and_unfolded(x, v, v_normals, faces, adjacency, sigma, share, chosen.taubin_slide, options, counts),
+                       v, faces, sigma, chosen.normal_pass, options, counts);
   clock.done("finish");
   report.face_normal_pass = chosen.normal_pass;
   report.taubin_slide = chosen.taubin_slide;

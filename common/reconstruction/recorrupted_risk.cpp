@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <utility>
 
 namespace hht {
 
@@ -26,18 +27,22 @@ bool recorrupted_risks(const Positions& y, double sigma, const NoiseShape& shape
       }
     const Positions y1 = y + kRecorruptionScale * z, y2 = y - z / kRecorruptionScale;
     std::vector<Positions> outputs;
-    if (!run(y1, outputs) || outputs.empty() || (d > 0 && outputs.size() != risks.risk.size())) return false;
-    risks.risk.resize(outputs.size(), 0.0);
-    std::vector<double>& draw = risks.per_draw.emplace_back(outputs.size());
+    if (!run(y1, outputs) || outputs.empty() || (d > 0 && outputs.size() != risks.per_draw[0].size())) return false;
+    std::vector<double> draw(outputs.size());
     for (size_t p = 0; p < outputs.size(); ++p) {
       if (outputs[p].rows() != y.rows()) return false;
       draw[p] = (outputs[p] - y2).squaredNorm() / static_cast<double>(y.rows());
-      risks.risk[p] += draw[p];
     }
-    ++risks.draws;
+    risks.per_draw.push_back(std::move(draw));
   }
-  for (double& r : risks.risk) r /= draws;
   return true;
+}
+
+std::vector<double> RecorruptedRisks::mean() const {
+  std::vector<double> sum(per_draw.empty() ? 0 : per_draw[0].size(), 0.0);
+  for (const std::vector<double>& draw : per_draw)
+    for (size_t p = 0; p < sum.size(); ++p) sum[p] += draw[p] / static_cast<double>(per_draw.size());
+  return sum;
 }
 
 }  // namespace hht

@@ -20,9 +20,10 @@ namespace hht {
 constexpr double kRecorruptionScale = 0.5;  // a: y1 = y + a z, y2 = y - z / a
 
 struct RecorruptedRisks {
-  std::vector<double> risk;  // per procedure: mean over the draws of ||f(y1) - y2||^2 / rows
   std::vector<std::vector<double>> per_draw;  // per draw, per procedure: ||f(y1) - y2||^2 / rows
-  int draws = 0;
+
+  int draws() const { return static_cast<int>(per_draw.size()); }
+  std::vector<double> mean() const;  // per procedure, over the draws
 };
 
 // The shape of the noise z is drawn with: sigma along each vertex's unit normal and
