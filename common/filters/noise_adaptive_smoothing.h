@@ -37,9 +37,9 @@
 //      replaced by the mean of its neighbours' and the vertices following (face_normal_pass.h) or
 //      not: well-shaped meshes keep it (small faces stand up that the cap of step 3 left tilted),
 //      coarse meshes with detail at the edge scale and CAD parts with creases do not (ours,
-//      docs/quality.md item 20); and, where the input's tangential offsets hold at least isotropic
-//      noise's (the share of step 3 is 1), step 3 by Taubin's slide instead of the cap (the move
-//      along the normals the solve's, the move across them Taubin's smoothing's,
+//      docs/quality.md item 20); and, where the input's tangential offsets hold about isotropic
+//      noise's (the share of step 3 is kSlideShare or more), step 3 by Taubin's slide instead of
+//      the cap (the move along the normals the solve's, the move across them Taubin's smoothing's,
 //      taubin_smoothing.h): its sharp roll-off takes out the finest tangential noise and drifts
 //      less than a strong low-pass, which smooth regular meshes want (ours, docs/quality.md
 //      item 22);
@@ -96,6 +96,12 @@ constexpr double kWeakestSearched = 1.5;
 // cost is the solve's, whose iterations grow as 1 / mu^2 (1.66M-vertex armadillo at 20%: 19 s
 // through meshlabserver with 2, 34 s with 3, 62 s with 4; docs/benchmarks.md).
 constexpr double kStrongestSelected = 3.0;
+// Taubin's slide is a finish where the tangential share reads this or more: the share is read
+// against sigma's estimate, which a smooth surface's own curvature lifts by a few percent, so
+// isotropic noise on bear, mushroom or camel reads 0.89-0.94 (lab, seed 11); noise along the normals of a
+// smoothly graded triangulation reads 0.1-0.3 (camel at 10%: 0.13). 0.8 and 0.85 gave the same
+// 62 of 66 organic cases below Taubin on both numbers, 0.9 60, 1 55 (docs/quality.md item 23).
+constexpr double kSlideShare = 0.85;
 // The face-normal pass's risk (step 4b): copies drawn, and the vertices of a large mesh it is
 // scored on (breadth-first patches, like the cross-validation's), with a fixed seed so that the
 // same input gets the same choice.

@@ -1,23 +1,66 @@
 #include "mesh/tangential_noise.h"
 
 #include <algorithm>
+#include <vector>
 
 namespace hht {
+
+namespace {
+
+bool interior(const VertexAdjacency& adjacency, int i) { return adjacency.valence(i) > 0 && !adjacency.boundary[i]; }
+
+Eigen::RowVector3d tangential(const Eigen::RowVector3d& x, const Eigen::RowVector3d& unit_normal) {
+  return x - x.dot(unit_normal) * unit_normal;
+}
+
+}  // namespace
 
 double tangential_noise_share(const Positions& v, const Positions& unit_normals, const VertexAdjacency& adjacency,
                               double sigma) {
   if (!(sigma > 0)) return 1;
-  double measured = 0, expected = 0;
-  for (int i = 0; i < adjacency.vertices(); ++i) {
-    // A boundary vertex sits off its one-sided centroid by the surface's own extent.
-    const int valence = adjacency.valence(i);
-    if (valence == 0 || adjacency.boundary[i]) continue;
+  const int n = adjacency.vertices();
+  // First differences: each interior vertex's tangential offset from its one-ring centroid.
+  Positions offsets = Positions::Zero(n, 3);
+  for (int i = 0; i < n; ++i) {
+    if (!interior(adjacency, i)) continue;
     Eigen::RowVector3d centroid = Eigen::RowVector3d::Zero();
     for (const int* j = adjacency.begin(i); j != adjacency.end(i); ++j) centroid += v.row(*j);
-    const Eigen::RowVector3d offset = v.row(i) - centroid / valence;
-    const Eigen::RowVector3d normal = unit_normals.row(i);
-    measured += (offset - offset.dot(normal) * normal).squaredNorm();
-    expected += 2 * sigma * sigma * (1 + 1.0 / valence);
+    offsets.row(i) = tangential(v.row(i) - centroid / adjacency.valence(i), unit_normals.row(i));
+  }
+  // Second differences, where the whole ring is interior; unit isotropic noise gives row i of
+  // (I - W)^2 a mean square of sum_l c_il^2 per coordinate, two coordinates on the tangent plane.
+  std::vector<double> coefficient(n, 0.0);
+  std::vector<int> touched;
+  double measured = 0, expected = 0;
+  for (int i = 0; i < n; ++i) {
+    if (!interior(adjacency, i)) continue;
+    const double ki = adjacency.valence(i);
+    bool ring_interior = true;
+    Eigen::RowVector3d mean = Eigen::RowVector3d::Zero();
+    for (const int* j = adjacency.begin(i); j != adjacency.end(i) && ring_interior; ++j) {
+      ring_interior = interior(adjacency, *j);
+      mean += offsets.row(*j);
+    }
+    if (!ring_interior) continue;
+    measured += tangential(offsets.row(i) - mean / ki, unit_normals.row(i)).squaredNorm();
+    // (I - W)^2 = I - 2 W + W^2, row i.
+    auto add = [&](int l, double c) {
+      if (coefficient[l] == 0) touched.push_back(l);
+      coefficient[l] += c;
+    };
+    add(i, 1);
+    for (const int* j = adjacency.begin(i); j != adjacency.end(i); ++j) {
+      add(*j, -2 / ki);
+      const double kj = adjacency.valence(*j);
+      for (const int* m = adjacency.begin(*j); m != adjacency.end(*j); ++m) add(*m, 1 / (ki * kj));
+    }
+    double gain = 0;
+    for (const int l : touched) {
+      gain += coefficient[l] * coefficient[l];
+      coefficient[l] = 0;
+    }
+    touched.clear();
+    expected += 2 * sigma * sigma * gain;
   }
   if (!(expected > 0)) return 1;
   return std::min(1.0, measured / expected);

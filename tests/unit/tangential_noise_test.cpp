@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace hht {
 namespace {
 
@@ -37,6 +39,21 @@ TEST(TangentialNoise, AnIrregularMeshReadsItsOwnOffsets) {
   EXPECT_EQ(share(cow, 0.1, NoiseDirection::Isotropic), 1.0);
   EXPECT_EQ(share(cow, 0.3, NoiseDirection::Isotropic), 1.0);
   EXPECT_GT(share(cow, 0.1, NoiseDirection::Normal), 0.9);
+}
+
+// A layout that varies smoothly over the surface (a graded sampling: here each coordinate of a
+// flat grid shifted along itself by a sine of 8 edges' period) is not noise: its offsets from
+// the one-ring centroids exceed what noise of a tenth of an edge gives them, but they change
+// little from vertex to vertex, and the second differences the share reads drop them (0.02
+// along the normals). Reading the offsets themselves, noise along the normals scores 1.
+TEST(TangentialNoise, ASmoothlyGradedLayoutIsNotNoise) {
+  test::ArrayMesh graded = test::grid(40, 40);
+  const double period = 8, amplitude = 0.9;
+  for (Eigen::Index i = 0; i < graded.positions.rows(); ++i)
+    for (int c = 0; c < 2; ++c)
+      graded.positions(i, c) += amplitude * std::sin(2 * M_PI * graded.positions(i, c) / period);
+  EXPECT_LT(share(graded, 0.1, NoiseDirection::Normal), 0.2);
+  EXPECT_GT(share(graded, 0.1, NoiseDirection::Isotropic), 0.9);
 }
 
 // A vertex on a hole's rim sits off its one-sided centroid by the surface's extent, not noise:
