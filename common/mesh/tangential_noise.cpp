@@ -16,7 +16,7 @@ Eigen::RowVector3d tangential(const Eigen::RowVector3d& x, const Eigen::RowVecto
 }  // namespace
 
 double tangential_noise_share(const Positions& v, const Positions& unit_normals, const VertexAdjacency& adjacency,
-                              double sigma) {
+                              double sigma, int sample_vertices) {
   if (!(sigma > 0)) return 1;
   const int n = adjacency.vertices();
   // First differences: each interior vertex's tangential offset from its one-ring centroid.
@@ -32,7 +32,10 @@ double tangential_noise_share(const Positions& v, const Positions& unit_normals,
   std::vector<double> coefficient(n, 0.0);
   std::vector<int> touched;
   double measured = 0, expected = 0;
-  for (int i = 0; i < n; ++i) {
+  // On a large mesh every stride-th vertex: the ratio is a mean, and the second differences
+  // touch each vertex's two rings (0.8 s at 1.66M vertices over all of them).
+  const int stride = std::max(1, n / std::max(1, sample_vertices));
+  for (int i = 0; i < n; i += stride) {
     if (!interior(adjacency, i)) continue;
     const double ki = adjacency.valence(i);
     bool ring_interior = true;

@@ -17,13 +17,16 @@
 
 namespace hht {
 
+// Meshes of more vertices read the second differences at every (n / this)-th vertex only.
+constexpr int kShareSampleVertices = 200000;
+
 // The mean square of the second differences of the tangential offsets from the one-ring
 // centroids (over the vertices whose ring is interior), over what isotropic noise of `sigma`
 // alone gives them (2 sigma^2 times the sum of the squared coefficients of row i of (I - W)^2,
 // W the neighbour average), at most 1 (1 also when no vertex qualifies or sigma is not
 // positive). `unit_normals` per vertex, smooth enough to tell the tangent plane (a few rings
-// averaged).
+// averaged). Read at about `sample_vertices` vertices, evenly strided.
 double tangential_noise_share(const Positions& v, const Positions& unit_normals, const VertexAdjacency& adjacency,
-                              double sigma);
+                              double sigma, int sample_vertices = kShareSampleVertices);
 
 }  // namespace hht

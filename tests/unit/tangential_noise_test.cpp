@@ -56,6 +56,22 @@ TEST(TangentialNoise, ASmoothlyGradedLayoutIsNotNoise) {
   EXPECT_GT(share(graded, 0.1, NoiseDirection::Isotropic), 0.9);
 }
 
+// A large mesh is read at a stride of its vertices: the mean changes little (a sphere of 10,242
+// vertices read at 1,000 of them), and a stride that skipped the vertices' rings altogether (or
+// counted the rest as zeros) would not.
+TEST(TangentialNoise, AStridedSampleReadsAsTheWholeMesh) {
+  const test::ArrayMesh s = test::sphere(5);
+  const double edge = mean_edge_length(s.positions, s.faces);
+  const Positions normals = area_weighted_vertex_normals(s.positions, s.faces).rowwise().normalized();
+  const VertexAdjacency adjacency = vertex_adjacency(s.faces, s.vertices());
+  for (NoiseDirection direction : {NoiseDirection::Isotropic, NoiseDirection::Normal}) {
+    const Positions noisy = add_gaussian_noise(s.positions, s.faces, 20, direction, 5);
+    const double whole = tangential_noise_share(noisy, normals, adjacency, 0.2 * edge);
+    const double sampled = tangential_noise_share(noisy, normals, adjacency, 0.2 * edge, 1000);
+    EXPECT_NEAR(sampled, whole, 0.05 * whole + 0.01);
+  }
+}
+
 // A vertex on a hole's rim sits off its one-sided centroid by the surface's extent, not noise:
 // counted, a sphere with holes and noise along the normals reads 1 at 10%.
 TEST(TangentialNoise, LeavesBoundaryVerticesOut) {
