@@ -98,9 +98,10 @@ constexpr double kWeakestSearched = 1.5;
 constexpr double kStrongestSelected = 3.0;
 // Taubin's slide is a finish where the tangential share reads this or more: the share is read
 // against sigma's estimate, which a smooth surface's own curvature lifts by a few percent, so
-// isotropic noise on bear, mushroom or camel reads 0.89-0.94 (lab, seed 11); noise along the normals of a
-// smoothly graded triangulation reads 0.1-0.3 (camel at 10%: 0.13). 0.8 and 0.85 gave the same
-// 62 of 66 organic cases below Taubin on both numbers, 0.9 60, 1 55 (docs/quality.md item 23).
+// isotropic noise on bear, mushroom or camel reads 0.89-0.94 (lab, seed 11); noise along the
+// normals of a smoothly graded triangulation reads 0.1-0.3 (camel at 10%: 0.13). 0.8 and 0.85
+// gave the same 62 of 66 organic cases below Taubin on both numbers, 0.9 60, 1 55
+// (docs/quality.md item 23).
 constexpr double kSlideShare = 0.85;
 // The face-normal pass's risk (step 4b): copies drawn, and the vertices of a large mesh it is
 // scored on (breadth-first patches, like the cross-validation's), with a fixed seed so that the

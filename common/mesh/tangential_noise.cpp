@@ -7,6 +7,7 @@ namespace hht {
 
 namespace {
 
+// A boundary vertex sits off its one-sided centroid by the surface's own extent: left out.
 bool interior(const VertexAdjacency& adjacency, int i) { return adjacency.valence(i) > 0 && !adjacency.boundary[i]; }
 
 Eigen::RowVector3d tangential(const Eigen::RowVector3d& x, const Eigen::RowVector3d& unit_normal) {
