@@ -12,6 +12,7 @@
 #include "mesh/cotangent_laplacian.h"
 #include "mesh/vertex_normals.h"
 #include "mesh/vertex_adjacency.h"
+#include "reconstruction/taubin_smoothing.h"
 #include "reconstruction/biharmonic_low_pass.h"
 #include "filters/spectral_mesh_filter.h"
 #include "filters/guided_normal_denoise.h"
@@ -89,13 +90,8 @@ Eigen::SparseMatrix<double> uniform_laplacian(const Faces& f, int n) {
   return L;
 }
 
-Positions taubin(Positions p, const Faces& f, int steps, double lambda, double mu) {
-  Eigen::SparseMatrix<double> L = uniform_laplacian(f, p.rows());
-  for (int s = 0; s < steps; ++s) {
-    p = p - lambda * Positions(L * p);
-    p = p - mu * Positions(L * p);
-  }
-  return p;
+Positions taubin(const Positions& p, const Faces& f, int steps, double lambda, double mu) {
+  return taubin_smoothing(vertex_adjacency(f, static_cast<int>(p.rows())), p, steps, lambda, mu);
 }
 
 // Taubin steps whose tangential part (w.r.t. the current vertex normals) is scaled by tau.

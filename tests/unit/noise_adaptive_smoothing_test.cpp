@@ -4,6 +4,7 @@
 #include "test_meshes.h"
 #include "mesh/uniform_laplacian.h"
 #include "mesh/vertex_adjacency.h"
+#include "reconstruction/taubin_smoothing.h"
 
 #include <Eigen/SparseCholesky>
 #include <gtest/gtest.h>
@@ -22,13 +23,8 @@ Positions smooth(const Positions& p, const Faces& f, const NoiseAdaptiveSmoothin
 }
 
 // MeshLab's Taubin Smooth (VCG's umbrella operator, lambda 0.5, mu -0.53, 10 steps).
-Positions taubin(Positions p, const Faces& f) {
-  const Eigen::SparseMatrix<double> l = uniform_laplacian(vertex_adjacency(f, static_cast<int>(p.rows())));
-  for (int s = 0; s < 10; ++s) {
-    p -= 0.5 * Positions(l * p);
-    p += 0.53 * Positions(l * p);
-  }
-  return p;
+Positions taubin(const Positions& p, const Faces& f) {
+  return taubin_smoothing(vertex_adjacency(f, static_cast<int>(p.rows())), p);
 }
 
 double rms(const Positions& a, const Positions& b) { return std::sqrt((a - b).rowwise().squaredNorm().mean()); }
