@@ -295,6 +295,8 @@ NoiseAdaptiveSmoothingOptions lab_options() {
   if (std::getenv("LAB_NOPASS")) o.face_normal_pass = false;  // item 20's face-normal pass off
   if (std::getenv("LAB_NOSLIDE")) o.taubin_slide = false;  // item 22's Taubin slide off
   if (std::getenv("LAB_NOTSHARE")) o.tangential_share = false;  // item 21's tangential share off
+  if (const char* x = std::getenv("LAB_FINISH")) o.forced_finish = std::atoi(x);  // step 4b's finish forced (bits: 1 slide, 2 pass)
+  if (const char* x = std::getenv("LAB_COPYSCALE")) o.copy_noise_scale = std::atof(x);  // the recorrupted copies' noise scaled
   return o;
 }
 
@@ -415,6 +417,9 @@ int main(int argc, char** argv) {
   const bool along_normals = argc > 4 && std::string(argv[4]) == "normal";
   if (along_normals) {
     noisy = add_gaussian_noise(clean, f, 100 * level, NoiseDirection::Normal, std::getenv("LAB_SEED") ? std::atoi(std::getenv("LAB_SEED")) : 11);
+  } else if (argc > 4 && std::string(argv[4]) == "axis") {  // a scanner's line of sight: along one fixed direction (1, 2, 3)/|.|
+    const Eigen::RowVector3d axis = Eigen::RowVector3d(1, 2, 3).normalized();
+    for (int i = 0; i < n; ++i) noisy.row(i) += g(rng) * axis;
   } else if (argc > 4 && std::string(argv[4]) == "random") {  // the paper's model: a random direction per vertex
     noisy = add_gaussian_noise(clean, f, 100 * level, NoiseDirection::Random, std::getenv("LAB_SEED") ? std::atoi(std::getenv("LAB_SEED")) : 11);
   } else {

@@ -146,6 +146,7 @@ std::vector<Finish> allowed_finishes(const NoiseAdaptiveSmoothingOptions& option
   // (docs/quality.md items 22 and 23).
   const bool slide_allowed = options.taubin_slide && share >= kSlideShare;
   std::vector<Finish> finishes;
+  if (options.forced_finish >= 0) return {{(options.forced_finish & 1) != 0, (options.forced_finish & 2) != 0}};
   for (bool slide : {false, true})
     for (bool pass : {false, true})
       if ((!slide || slide_allowed) && (!pass || options.face_normal_pass)) finishes.push_back({slide, pass});
@@ -237,7 +238,7 @@ bool finish_risks(const Positions& v, const Positions& v_normals, const Faces& f
   NoiseShape shape;
   shape.tangential_share = tangential_share;
   if (tangential_share < 1) shape.unit_normals = sample ? smoothed_vertex_normals(y, f, a) : v_normals;
-  return recorrupted_risks(y, sigma, shape, kPassDraws, kPassSeed, run, risks);
+  return recorrupted_risks(y, sigma * options.copy_noise_scale, shape, kPassDraws, kPassSeed, run, risks);
 }
 
 }  // namespace
@@ -259,8 +260,9 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
   // solve's matrix singular or indefinite.
   auto positive = [](double x) { return x > 0 && std::isfinite(x); };
   if (!positive(options.mu_scale) || !positive(options.selection_bias) || !positive(options.weaker_allowed) ||
+      !positive(options.copy_noise_scale) || options.forced_finish < -1 || options.forced_finish > 3 ||
       !(options.tangential_cap >= 0) || !(options.first_order >= 0) || !std::isfinite(options.first_order)) {
-    error = "the smoothing's filter settings are out of range (scale, bias and weaker limit positive, cap and first-order weight not negative)";
+    error = "the smoothing's filter settings are out of range (scale, bias, weaker limit and copies' noise scale positive, cap and first-order weight not negative, finish -1 to 3)";
     return false;
   }
   const int n = static_cast<int>(positions.rows());

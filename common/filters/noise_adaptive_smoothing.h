@@ -136,6 +136,11 @@ struct NoiseAdaptiveSmoothingOptions {
   double selection_bias = kSelectionBias;
   double strongest_selected = kStrongestSelected;
   double move_radius = kMoveRadius;
+  // Experiments on step 4b (docs/quality.md, "Other noise models"): only this finish (0 the cap,
+  // 1 Taubin's slide, 2 the cap and the face-normal pass, 3 the slide and the pass; -1 the risk
+  // chooses), and the recorrupted copies' noise scaled by this.
+  int forced_finish = -1;
+  double copy_noise_scale = 1;
   CycleOptions cycle;
   EmdOptions emd;
 };

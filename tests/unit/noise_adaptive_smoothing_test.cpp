@@ -139,6 +139,28 @@ TEST(NoiseAdaptiveSmoothing, TakesTaubinsSlideWhereItsRiskIsLower) {
   }
 }
 
+// The experiment field that forces step 4b's finish (docs/quality.md, "Other noise models"):
+// each forced finish is run alone and reported, and the risk's own choice is one of the four.
+TEST(NoiseAdaptiveSmoothing, AForcedFinishIsTheOneRun) {
+  const test::ArrayMesh m = test::load_data_mesh("camel");
+  const Positions noisy = add_gaussian_noise(m.positions, m.faces, 20, NoiseDirection::Isotropic, 21);
+  NoiseAdaptiveSmoothingReport chosen;
+  const Positions ours = smooth(noisy, m.faces, {}, &chosen);
+  std::vector<Positions> forced;
+  for (int finish = 0; finish < 4; ++finish) {
+    NoiseAdaptiveSmoothingOptions o;
+    o.forced_finish = finish;
+    NoiseAdaptiveSmoothingReport report;
+    forced.push_back(smooth(noisy, m.faces, o, &report));
+    EXPECT_EQ(report.taubin_slide, (finish & 1) != 0) << finish;
+    EXPECT_EQ(report.face_normal_pass, (finish & 2) != 0) << finish;
+    EXPECT_EQ(report.finishes_scored, 0) << finish;
+  }
+  for (int a = 0; a < 4; ++a)
+    for (int b = a + 1; b < 4; ++b) EXPECT_NE(forced[a], forced[b]) << a << " " << b;
+  EXPECT_EQ(ours, forced[(chosen.taubin_slide ? 1 : 0) + (chosen.face_normal_pass ? 2 : 0)]);
+}
+
 // A CAD part whose triangulation has fans of long edges: the uniform Laplacian would slide their
 // hubs by several mean edges, the noise moved them by a few sigma. Without the hold of step 5
 // the RMS vertex error is above Taubin Smooth's, and five times the noise's (docs/quality.md).
@@ -368,12 +390,15 @@ TEST(NoiseAdaptiveSmoothing, RefusesBadOptionsAndInput) {
   o.strength = 0;
   EXPECT_FALSE(noise_adaptive_smooth(s.positions, s.faces, o, out, report, error));
   EXPECT_NE(error.find("strength"), std::string::npos);
-  for (int bad = 0; bad < 4; ++bad) {  // the filter's experiment fields
+  for (int bad = 0; bad < 7; ++bad) {  // the filter's experiment fields
     NoiseAdaptiveSmoothingOptions f;
     if (bad == 0) f.first_order = -1;
     if (bad == 1) f.mu_scale = 0;
     if (bad == 2) f.selection_bias = std::nan("");
     if (bad == 3) f.tangential_cap = -1;
+    if (bad == 4) f.copy_noise_scale = 0;
+    if (bad == 5) f.forced_finish = 4;
+    if (bad == 6) f.forced_finish = -2;
     error.clear();
     EXPECT_FALSE(noise_adaptive_smooth(s.positions, s.faces, f, out, report, error)) << bad;
     EXPECT_NE(error.find("out of range"), std::string::npos) << bad;
