@@ -17,7 +17,9 @@ void declare(const MeshDocument&, RichParameterList& p) {
                        "measured best on the evaluation corpus (docs/quality.md), above 1 smooths more, below 1 less "
                        "(0.1 to 10)."));
   p.addParam(RichFloat("noisePercent", 0.0f, "Noise level (% of mean edge, 0 = estimate)",
-                       "Standard deviation of the noise per coordinate in percent of the mean edge length. 0 "
+                       "Standard deviation of the noise along the surface normal in percent of the mean edge length "
+                       "(per coordinate for isotropic noise; HHT: Add Gaussian Noise logs it, about sigma / 1.73 for "
+                       "its random directions). 0 "
                        "estimates it from the finest IMF of the one-ring height signal along a Hamiltonian cycle, "
                        "capped by the exactly flat hinges of CAD meshes (a clean CAD export reads as noise-free and "
                        "is left as it is); give a value only when you know it, or to smooth such a mesh (0 to 1000): the "

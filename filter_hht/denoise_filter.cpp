@@ -24,7 +24,9 @@ constexpr int kMaxPasses = 1000, kMaxCycles = 100;
 void declare(const MeshDocument&, RichParameterList& p) {
   const hht::DenoiseOptions d;
   p.addParam(RichFloat("noisePercent", float(100 * d.noise), "Noise level (% of mean edge, 0 = estimate)",
-                       "Standard deviation of the noise in percent of the mean edge length (0 to 1000). 0 estimates "
+                       "Standard deviation of the noise along the surface normal in percent of the mean edge length "
+                       "(per coordinate for isotropic noise; HHT: Add Gaussian Noise logs it, about sigma / 1.73 for "
+                       "its random directions; 0 to 1000). 0 estimates "
                        "it from the finest IMF of the one-ring height signal along a Hamiltonian cycle, capped by the "
                        "exactly flat hinges of CAD meshes (a clean CAD export reads as noise-free and is left as it "
                        "is); it sets the number of refinement rounds and the untangling smoothing, and on a surface without sharp "

@@ -91,6 +91,22 @@ TEST(MeshlabserverHht, NoiseHasTheRequestedSigma) {
   EXPECT_NEAR(std::sqrt(sq / in.vn) / edge, 0.10, 0.10 * 0.03);  // the script asks for 10%
 }
 
+// The log gives the noise's part along the normals, the level the smoothing and denoising
+// filters read and take as noisePercent: a third of the variance for the script's random
+// directions (10% / sqrt 3 = 5.77%), all of it along the normals.
+TEST(MeshlabserverHht, NoiseLogsItsPartAlongTheNormals) {
+  for (const char* direction : {"0", "1"}) {
+    const std::string tag = std::string("noise_along_") + direction;
+    const ServerRun run = run_meshlabserver(data_mesh("fandisk"), chain_scripts(tag, {"add_noise.mlx"}, {{"direction", direction}}), tag);
+    ASSERT_EQ(run.exit_code, 0) << run.log;
+    const std::string key = "along the vertex normals ";
+    const size_t at = run.log.find(key);
+    ASSERT_NE(at, std::string::npos) << run.log;
+    const double percent = std::stod(run.log.substr(at + key.size()));
+    EXPECT_NEAR(percent, direction == std::string("0") ? 10 / std::sqrt(3.0) : 10.0, 0.4) << run.log;
+  }
+}
+
 // A clean irregular mesh with slivers standing off its surface (bull: enhance.mlx turned 171
 // faces over before the flip guard, smooth.mlx 5 before its un-turning of wrinkles): both
 // scripts change it and turn no face over.
