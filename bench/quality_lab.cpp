@@ -427,10 +427,7 @@ int main(int argc, char** argv) {
       for (int k = 0; k < 3; ++k) noisy(i, k) += g(rng);
   }
   if (std::getenv("LAB_GIVENLOG")) {  // the noise given as HHT: Add Gaussian Noise logs it: along the normals, in the noisy mesh's edge
-    const Positions normals = area_weighted_vertex_normals(clean, f);
-    double along = 0;
-    for (int i = 0; i < n; ++i) along += std::pow((noisy.row(i) - clean.row(i)).dot(normals.row(i)), 2);
-    const std::string given = std::to_string(std::sqrt(along / n) / mean_edge_length(noisy, f));
+    const std::string given = std::to_string(noise_along_normals(clean, noisy, f));
     setenv("LAB_GIVEN", given.c_str(), 1);
   }
   auto show = [&](const char* name, const Positions& p) {

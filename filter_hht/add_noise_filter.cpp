@@ -3,7 +3,6 @@
 #include "mesh_adapter.h"
 
 #include "evaluation/gaussian_noise.h"
-#include "mesh/vertex_normals.h"
 
 namespace hht_plugin {
 
@@ -45,21 +44,9 @@ bool apply(FilterRun& run) {
     return false;
   const double edge = hht::mean_edge_length(positions, faces);
   const double rms = std::sqrt((noisy - positions).rowwise().squaredNorm().mean());
-  // The part along the input's normals is what the smoothing and denoising filters estimate and
-  // take as `noisePercent`: random directions put a third of the variance there.
-  const hht::Positions normals = hht::area_weighted_vertex_normals(positions, faces);
-  double along = 0;
-  int counted = 0;
-  for (Eigen::Index i = 0; i < normals.rows(); ++i)
-    if (normals.row(i).squaredNorm() > 0) {
-      const double d = (noisy.row(i) - positions.row(i)).dot(normals.row(i));
-      along += d * d;
-      ++counted;
-    }
-  // In the noisy mesh's own mean edge, as the filters read it (noise lengthens the edges, by about
-  // a fifth at 30% isotropic: the level in the clean mesh's edge would then read too high).
-  const double noisy_edge = hht::mean_edge_length(noisy, faces);
-  const double along_percent = counted > 0 && noisy_edge > 0 ? 100.0 * std::sqrt(along / counted) / noisy_edge : 0.0;
+  // What the smoothing and denoising filters read and take as `noisePercent`: random directions
+  // put a third of the variance along the normals.
+  const double along_percent = 100.0 * hht::noise_along_normals(positions, noisy, faces);
   run.log(QString("Gaussian noise: sigma %1% of the mean edge length %2 = %3, %4; measured RMS displacement %5, "
                   "along the vertex normals %6% of the noisy mesh's mean edge (the noise level the HHT smoothing and "
                   "denoising filters read: give this as their noisePercent)")

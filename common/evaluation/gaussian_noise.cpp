@@ -2,6 +2,7 @@
 
 #include "mesh/vertex_normals.h"
 
+#include <cmath>
 #include <random>
 
 namespace hht {
@@ -36,6 +37,19 @@ Positions add_gaussian_noise(const Positions& positions, const Faces& faces, dou
     out.row(i) += sigma * gauss(rng) * dir;
   }
   return out;
+}
+
+double noise_along_normals(const Positions& clean, const Positions& noisy, const Faces& faces) {
+  const Positions normals = area_weighted_vertex_normals(clean, faces);
+  double along = 0;
+  int counted = 0;
+  for (Eigen::Index i = 0; i < normals.rows(); ++i)
+    if (normals.row(i).squaredNorm() > 0) {
+      along += std::pow((noisy.row(i) - clean.row(i)).dot(normals.row(i)), 2);
+      ++counted;
+    }
+  const double edge = mean_edge_length(noisy, faces);
+  return counted > 0 && edge > 0 ? std::sqrt(along / counted) / edge : 0.0;
 }
 
 }  // namespace hht

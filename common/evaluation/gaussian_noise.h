@@ -18,4 +18,11 @@ double mean_edge_length(const Positions& positions, const Faces& faces);
 Positions add_gaussian_noise(const Positions& positions, const Faces& faces, double percent_of_mean_edge,
                              NoiseDirection direction, unsigned seed);
 
+// The RMS of the displacement from `clean` to `noisy` along the clean mesh's vertex normals, over
+// the noisy mesh's mean edge: the noise level the smoothing and denoising filters estimate and
+// take as given (sigma for noise along the normals or per coordinate; about sigma / sqrt 3 along
+// random directions; noise lengthens the edges, so a little less at heavy noise). Vertices of no
+// face are left out; 0 if none is left.
+double noise_along_normals(const Positions& clean, const Positions& noisy, const Faces& faces);
+
 }  // namespace hht

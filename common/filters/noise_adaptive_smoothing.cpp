@@ -144,9 +144,9 @@ std::vector<Finish> allowed_finishes(const NoiseAdaptiveSmoothingOptions& option
   // below kSlideShare), the slide would be mostly error, and the copies' risk cannot see it:
   // their tangential noise is drawn at the share, which the triangulation's own offsets fill
   // (docs/quality.md items 22 and 23).
+  if (options.forced_finish >= 0) return {{(options.forced_finish & 1) != 0, (options.forced_finish & 2) != 0}};
   const bool slide_allowed = options.taubin_slide && share >= kSlideShare;
   std::vector<Finish> finishes;
-  if (options.forced_finish >= 0) return {{(options.forced_finish & 1) != 0, (options.forced_finish & 2) != 0}};
   for (bool slide : {false, true})
     for (bool pass : {false, true})
       if ((!slide || slide_allowed) && (!pass || options.face_normal_pass)) finishes.push_back({slide, pass});
