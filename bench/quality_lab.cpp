@@ -430,6 +430,11 @@ int main(int argc, char** argv) {
     const std::string given = std::to_string(noise_along_normals(clean, noisy, f));
     setenv("LAB_GIVEN", given.c_str(), 1);
   }
+  if (std::getenv("LAB_COPYTRUE")) {  // step 4b's copies at the noise's true RMS along the normals, not the estimate's
+    const std::string scale = std::to_string(noise_along_normals(clean, noisy, f) / estimated_sigma(noisy, f));
+    std::printf("  copy scale %s\n", scale.c_str());
+    setenv("LAB_COPYSCALE", scale.c_str(), 1);
+  }
   auto show = [&](const char* name, const Positions& p) {
     Score s = score(p, clean, f);
     std::printf("  %-28s E_a %6.2f  rms %6.1f  flips %d (%d not folded in clean)\n", name, s.ea, s.rms, s.flips, s.new_flips);
