@@ -140,11 +140,11 @@ struct Finish {
 };
 
 std::vector<Finish> allowed_finishes(const NoiseAdaptiveSmoothingOptions& options, double share) {
+  if (options.forced_finish >= 0) return {{(options.forced_finish & 1) != 0, (options.forced_finish & 2) != 0}};
   // Where the input holds clearly less tangential noise than isotropic noise of sigma (share
   // below kSlideShare), the slide would be mostly error, and the copies' risk cannot see it:
   // their tangential noise is drawn at the share, which the triangulation's own offsets fill
   // (docs/quality.md items 22 and 23).
-  if (options.forced_finish >= 0) return {{(options.forced_finish & 1) != 0, (options.forced_finish & 2) != 0}};
   const bool slide_allowed = options.taubin_slide && share >= kSlideShare;
   std::vector<Finish> finishes;
   for (bool slide : {false, true})
