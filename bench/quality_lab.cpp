@@ -994,6 +994,73 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "AX") {  // the noise covariance's shape from the heights' second differences along each normal
+    const VertexAdjacency va = vertex_adjacency(f, n);
+    const double hn = mean_edge_length(noisy, f);
+    const Positions p = noisy / hn;
+    // smoothed normals: area-weighted, averaged over 3 rings
+    Positions nn = area_weighted_vertex_normals(p, f), next(n, 3);
+    for (int sweep = 0; sweep < 3; ++sweep) {
+      for (int i = 0; i < n; ++i) {
+        Eigen::RowVector3d sum = nn.row(i);
+        for (const int* j = va.begin(i); j != va.end(i); ++j) sum += nn.row(*j);
+        next.row(i) = sum.normalized();
+      }
+      nn.swap(next);
+    }
+    Eigen::VectorXd ht(n);
+    for (int i = 0; i < n; ++i) {
+      Eigen::RowVector3d c = Eigen::RowVector3d::Zero();
+      for (const int* j = va.begin(i); j != va.end(i); ++j) c += p.row(*j);
+      ht[i] = va.valence(i) ? nn.row(i).dot(p.row(i) - c / va.valence(i)) : 0;
+    }
+    std::vector<double> coefficient(n, 0.0);
+    std::vector<int> touched;
+    std::vector<std::pair<double, int>> values;
+    std::vector<double> gains(n, 0);
+    for (int i = 0; i < n; ++i) {
+      if (!va.valence(i) || va.boundary[i]) continue;
+      bool ok = true;
+      double m = 0;
+      for (const int* j = va.begin(i); j != va.end(i); ++j) ok = ok && !va.boundary[*j], m += ht[*j];
+      if (!ok) continue;
+      const double ki = va.valence(i);
+      auto add = [&](int l, double c) { if (coefficient[l] == 0) touched.push_back(l); coefficient[l] += c; };
+      add(i, 1);
+      for (const int* j = va.begin(i); j != va.end(i); ++j) {
+        add(*j, -2 / ki);
+        const double kj = va.valence(*j);
+        for (const int* q = va.begin(*j); q != va.end(*j); ++q) add(*q, 1 / (ki * kj));
+      }
+      double gain = 0;
+      for (int l : touched) gain += coefficient[l] * coefficient[l], coefficient[l] = 0;
+      touched.clear();
+      const double d = ht[i] - m / ki;
+      values.push_back({d * d / gain, i});
+    }
+    std::sort(values.begin(), values.end());
+    const double trim = std::getenv("LAB_ZTRIM") ? std::atof(std::getenv("LAB_ZTRIM")) : 0.98;
+    const size_t keep = size_t(trim * values.size());
+    Eigen::Matrix<double, 6, 6> ata = Eigen::Matrix<double, 6, 6>::Zero();
+    Eigen::Matrix<double, 6, 1> atb = Eigen::Matrix<double, 6, 1>::Zero();
+    for (size_t k = 0; k < keep; ++k) {
+      const Eigen::RowVector3d u = nn.row(values[k].second);
+      Eigen::Matrix<double, 6, 1> row;
+      row << u[0] * u[0], u[1] * u[1], u[2] * u[2], 2 * u[0] * u[1], 2 * u[0] * u[2], 2 * u[1] * u[2];
+      ata += row * row.transpose();
+      atb += row * values[k].first;
+    }
+    const Eigen::Matrix<double, 6, 1> x = ata.ldlt().solve(atb);
+    Eigen::Matrix3d cov;
+    cov << x[0], x[3], x[4], x[3], x[1], x[5], x[4], x[5], x[2];
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
+    const Eigen::Vector3d ev = es.eigenvalues();
+    const Eigen::Vector3d top = es.eigenvectors().col(2);
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 6, 6>> cs(ata);
+    std::printf("  AX eig %.5f %.5f %.5f ratio min/max %.3f mid/max %.3f top axis (%.2f %.2f %.2f) normals' cond %.1f\n", ev[0], ev[1], ev[2],
+                ev[0] / ev[2], ev[1] / ev[2], top[0], top[1], top[2], cs.eigenvalues()[5] / std::max(1e-300, cs.eigenvalues()[0]));
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "P") {  // a cut-off per patch: oracle and cross-validation, against the global ones (raw filter)
     const double mu0 = lab_options().mu_scale / std::sqrt(estimated_sigma(noisy, f));
     const double scale = 1.0 / h;
@@ -1112,6 +1179,41 @@ int main(int argc, char** argv) {
       show(name, xs[s_] / scale);
     }
     std::printf("  %d patches of %d; global GCV chooses %.2f\n", patches, patch_size, strengths[global_gcv]);
+    {  // per patch, the discrepancy principle: the strongest strength whose removed normal energy is at most kappa times noise's
+      const double sg = estimated_sigma(noisy, f);
+      const double kappa = std::getenv("LAB_KAPPA") ? std::atof(std::getenv("LAB_KAPPA")) : 1.0;
+      std::vector<std::vector<double>> rem(patches, std::vector<double>(S, 0)), prem(patches, std::vector<double>(S, 0));
+      for (int s_ = 0; s_ < S; ++s_)
+        for (int i = 0; i < n; ++i) {
+          const Eigen::RowVector3d nn = normals.row(i);
+          rem[patch[i]][s_] += std::pow(nn.dot(xs[s_].row(i) - v.row(i)), 2);
+          prem[patch[i]][s_] += std::pow(nn.dot(as[s_].row(i) - probes.row(i)), 2);
+        }
+      std::vector<int> disc(patches, 0);
+      for (int p = 0; p < patches; ++p) {
+        int best = 0;
+        for (int s_ = 0; s_ < S; ++s_)
+          if (std::getenv("LAB_GROWTH") ? rem[p][s_] / prem[p][s_] <= kappa * rem[p][0] / prem[p][0]
+                                        : rem[p][s_] <= kappa * sg * sg * prem[p][s_])
+            best = s_;
+        disc[p] = best;
+        if (std::getenv("LAB_RATIODUMP")) {
+          std::printf("  patch %2d oracle %d:", p, oracle[p]);
+          for (int s_ = 0; s_ < S; ++s_) std::printf(" %.2f", rem[p][s_] / (sg * sg * prem[p][s_]));
+          std::printf("\n");
+        }
+      }
+      show("per-patch discrepancy", field(disc));
+      std::map<double, int> hd;
+      for (int p = 0; p < patches; ++p) hd[strengths[disc[p]]]++;
+      std::printf("  discrepancy choices:");
+      for (auto& [k, c] : hd) std::printf(" %.2f:%d", k, c);
+      std::printf("\n  (disc, oracle) pairs:");
+      std::map<std::pair<int, int>, int> dp;
+      for (int p = 0; p < patches; ++p) dp[{disc[p], oracle[p]}]++;
+      for (auto& [k, c] : dp) std::printf(" (%d,%d):%d", k.first, k.second, c);
+      std::printf("\n");
+    }
     show("per-patch oracle", field(oracle));
     show("per-patch GCV", field(gcv));
     std::map<double, int> histogram;
