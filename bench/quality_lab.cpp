@@ -12,6 +12,7 @@
 #include "mesh/cotangent_laplacian.h"
 #include "mesh/vertex_normals.h"
 #include "mesh/vertex_adjacency.h"
+#include "mesh/uniform_laplacian.h"
 #include "reconstruction/taubin_smoothing.h"
 #include "reconstruction/biharmonic_low_pass.h"
 #include "filters/spectral_mesh_filter.h"
@@ -1017,25 +1018,14 @@ int main(int argc, char** argv) {
     std::vector<double> coefficient(n, 0.0);
     std::vector<int> touched;
     std::vector<std::pair<double, int>> values;
-    std::vector<double> gains(n, 0);
     for (int i = 0; i < n; ++i) {
       if (!va.valence(i) || va.boundary[i]) continue;
       bool ok = true;
       double m = 0;
       for (const int* j = va.begin(i); j != va.end(i); ++j) ok = ok && !va.boundary[*j], m += ht[*j];
       if (!ok) continue;
-      const double ki = va.valence(i);
-      auto add = [&](int l, double c) { if (coefficient[l] == 0) touched.push_back(l); coefficient[l] += c; };
-      add(i, 1);
-      for (const int* j = va.begin(i); j != va.end(i); ++j) {
-        add(*j, -2 / ki);
-        const double kj = va.valence(*j);
-        for (const int* q = va.begin(*j); q != va.end(*j); ++q) add(*q, 1 / (ki * kj));
-      }
-      double gain = 0;
-      for (int l : touched) gain += coefficient[l] * coefficient[l], coefficient[l] = 0;
-      touched.clear();
-      const double d = ht[i] - m / ki;
+      const double gain = squared_laplacian_row_gain(va, i, coefficient, touched);
+      const double d = ht[i] - m / va.valence(i);
       values.push_back({d * d / gain, i});
     }
     std::sort(values.begin(), values.end());

@@ -1,5 +1,7 @@
 #include "mesh/tangential_noise.h"
 
+#include "mesh/uniform_laplacian.h"
+
 #include <algorithm>
 #include <vector>
 
@@ -47,24 +49,7 @@ double tangential_noise_share(const Positions& v, const Positions& unit_normals,
     }
     if (!ring_interior) continue;
     measured += tangential(offsets.row(i) - mean / ki, unit_normals.row(i)).squaredNorm();
-    // (I - W)^2 = I - 2 W + W^2, row i.
-    auto add = [&](int l, double c) {
-      if (coefficient[l] == 0) touched.push_back(l);
-      coefficient[l] += c;
-    };
-    add(i, 1);
-    for (const int* j = adjacency.begin(i); j != adjacency.end(i); ++j) {
-      add(*j, -2 / ki);
-      const double kj = adjacency.valence(*j);
-      for (const int* m = adjacency.begin(*j); m != adjacency.end(*j); ++m) add(*m, 1 / (ki * kj));
-    }
-    double gain = 0;
-    for (const int l : touched) {
-      gain += coefficient[l] * coefficient[l];
-      coefficient[l] = 0;
-    }
-    touched.clear();
-    expected += 2 * sigma * sigma * gain;
+    expected += 2 * sigma * sigma * squared_laplacian_row_gain(adjacency, i, coefficient, touched);
   }
   if (!(expected > 0)) return 1;
   return std::min(1.0, measured / expected);

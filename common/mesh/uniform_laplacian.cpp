@@ -30,4 +30,27 @@ void apply_graph_laplacian(const VertexAdjacency& adjacency, const Positions& y,
   });
 }
 
+double squared_laplacian_row_gain(const VertexAdjacency& adjacency, int i, std::vector<double>& scratch,
+                                  std::vector<int>& touched) {
+  // (I - W)^2 = I - 2 W + W^2, row i.
+  auto add = [&](int l, double c) {
+    if (scratch[l] == 0) touched.push_back(l);
+    scratch[l] += c;
+  };
+  const double ki = adjacency.valence(i);
+  add(i, 1);
+  for (const int* j = adjacency.begin(i); j != adjacency.end(i); ++j) {
+    add(*j, -2 / ki);
+    const double kj = adjacency.valence(*j);
+    for (const int* m = adjacency.begin(*j); m != adjacency.end(*j); ++m) add(*m, 1 / (ki * kj));
+  }
+  double gain = 0;
+  for (const int l : touched) {
+    gain += scratch[l] * scratch[l];
+    scratch[l] = 0;
+  }
+  touched.clear();
+  return gain;
+}
+
 }  // namespace hht

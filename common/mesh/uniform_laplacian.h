@@ -10,6 +10,8 @@
 
 #include <Eigen/Sparse>
 
+#include <vector>
+
 namespace hht {
 
 // L = I - D^-1 A (n x n, not symmetric).
@@ -17,5 +19,11 @@ Eigen::SparseMatrix<double> uniform_laplacian(const VertexAdjacency& adjacency);
 
 // out = K y (rows are points; on two threads for large meshes).
 void apply_graph_laplacian(const VertexAdjacency& adjacency, const Positions& y, Positions& out);
+
+// The sum of the squared coefficients of row i of L^2 = (I - W)^2, W the neighbour average:
+// the variance unit white noise gives vertex i's second difference. `scratch` (one zero per
+// vertex) and `touched` are work space, handed back as they came.
+double squared_laplacian_row_gain(const VertexAdjacency& adjacency, int i, std::vector<double>& scratch,
+                                  std::vector<int>& touched);
 
 }  // namespace hht
