@@ -14,6 +14,7 @@ archive (scripts/setup.sh installs it) into OUT/meshes on first use.
 """
 import argparse
 import concurrent.futures
+import csv
 import math
 import os
 import re
@@ -26,7 +27,7 @@ LAB = os.path.join(ROOT, "build", "bench", "quality_lab")
 CGAL_DATA = "/usr/share/doc/libcgal-dev/data.tar.gz"
 MESHES = ("homer cow femur elephant armadillo bunny00 bull camel dino man bear lion-head triceratops "
           "mannequin-devil diplodocus ChineseDragon-10kv elk hand head pig mushroom cactus").split()
-# The tsv's columns after mesh and level.
+# The table's columns after mesh and level (--oracle reads them by name).
 COLUMNS = ("noisy_ea", "noisy_rms", "taubin_ea", "taubin_rms", "ours_ea", "ours_rms", "below_taubin", "whole")
 
 
@@ -34,6 +35,8 @@ def mesh_folder(out):
     folder = os.path.join(out, "meshes")
     missing = [m for m in MESHES if not os.path.exists(os.path.join(folder, m + ".off"))]
     if missing:
+        if not os.path.exists(CGAL_DATA):
+            sys.exit("no %s: run ./scripts/setup.sh (it installs libcgal-demo)" % CGAL_DATA)
         os.makedirs(folder, exist_ok=True)
         wanted = {"data/meshes/%s.off" % m: m for m in missing}
         with tarfile.open(CGAL_DATA) as tar:
@@ -41,6 +44,9 @@ def mesh_folder(out):
                 if member.name in wanted:
                     with tar.extractfile(member) as src, open(os.path.join(folder, wanted[member.name] + ".off"), "wb") as dst:
                         dst.write(src.read())
+        absent = [m for m in missing if not os.path.exists(os.path.join(folder, m + ".off"))]
+        if absent:
+            sys.exit("not in %s: %s" % (CGAL_DATA, " ".join(absent)))
     return folder
 
 
@@ -90,12 +96,10 @@ def oracle(args):
     won = {}
     for tag in args.tags:
         with open(os.path.join(args.out, "%s_%s.tsv" % (tag, args.model))) as table:
-            next(table)
-            for line in table:
-                fields = line.rstrip("\n").split("\t")
-                best = won.setdefault((fields[0], fields[1]), [0, 0])
-                best[0] = max(best[0], int(fields[8]))
-                best[1] = max(best[1], int(fields[9]))
+            for row in csv.DictReader(table, delimiter="\t"):
+                best = won.setdefault((row["mesh"], row["level"]), [0, 0])
+                best[0] = max(best[0], int(row["below_taubin"]))
+                best[1] = max(best[1], int(row["whole"]))
     print("%s, best of %s by the truth: both at or below Taubin %d of %d, whole goal %d"
           % (args.model, " ".join(args.tags), sum(b for b, _ in won.values()), len(won), sum(w for _, w in won.values())))
 
