@@ -223,8 +223,12 @@ bool apply(FilterRun& run) {
     const QString rounds = own_rounds == 0 ? QString("all guided")
                                            : QString("%1 on the faces' own normals (bilateral normal filtering, range width %2)")
                                                  .arg(which).arg(hht::kOwnNormalSigma);
-    run.log(QString("  refinement: %1 round(s) of %2 normal filtering passes and %3 vertex update iterations; %4")
-                .arg(report.refine_rounds).arg(report.refine_normal_passes).arg(o.refine_vertex_iterations).arg(rounds));
+    const QString fitting = report.refine_fit_each_pass
+                                ? QString("each followed by %1 vertex update iterations (the noise is heavy)")
+                                      .arg(hht::kFitEachPassIterations)
+                                : QString("then %1 vertex update iterations").arg(o.refine_vertex_iterations);
+    run.log(QString("  refinement: %1 round(s) of %2 normal filtering passes, %3; %4")
+                .arg(report.refine_rounds).arg(report.refine_normal_passes).arg(fitting).arg(rounds));
     if (report.refine_near_creases >= 0 && guided_rounds > 0)
       run.log(QString("  guided rounds: range width %1 on the %2% of the faces near the smoothed mesh's creases (sharper "
                       "than %3 degrees), %4 elsewhere")

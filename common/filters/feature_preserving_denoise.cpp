@@ -287,6 +287,11 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
           static_cast<double>(std::count(near_creases.begin(), near_creases.end(), 1)) / static_cast<double>(near_creases.size());
     }
     refine.vertex_iterations = options.refine_vertex_iterations;
+    report.refine_fit_each_pass = options.refine_fit_each_pass && sigma >= kNoisePerRound;
+    if (report.refine_fit_each_pass) {
+      refine.fit_each_pass = true;
+      refine.vertex_iterations = kFitEachPassIterations;
+    }
     const Positions rebuilt = result;
     // Rounds set by the noise end early at one that drifts, and go on (up to kExtraRoundsFactor times
     // as many) while each converges (kRoundDriftStep, kRoundConvergedStep); a given count is done as is.
@@ -296,6 +301,7 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     GuidedNormalDenoiseOptions own;  // the last rounds: bilateral normal filtering, one width
     own.normal_passes = refine.normal_passes;
     own.vertex_iterations = refine.vertex_iterations;
+    own.fit_each_pass = refine.fit_each_pass;
     own.sigma = kOwnNormalSigma;
     own.guidance = NormalGuidance::OwnNormal;
     for (int round = 0; round < max_rounds; ++round) {

@@ -68,6 +68,13 @@ constexpr double kRoundDriftStep = 0.18;
 constexpr double kRoundConvergedStep = 0.10;
 constexpr double kExtraRoundsFactor = 1.5;
 
+// From one round's noise on (sigma >= kNoisePerRound) the refinement fits the vertices after every
+// normal pass, kFitEachPassIterations vertex update iterations each, as the guided filter's
+// authors do, instead of once after all passes: heavy noise leaves normals that no surface takes
+// (slivers, tangles), and filtering them on is wasted. At lighter noise the one fit stays: fitting
+// after each pass multiplies the vertex updates, which facet curved parts (docs/quality.md item 24).
+constexpr int kFitEachPassIterations = 10;
+
 // The refinement may move vertices by at most this times the noise's RMS (sqrt(3) sigma); a
 // larger move is scaled down to it.
 constexpr double kRefineMoveToNoise = 0.75;
@@ -136,6 +143,7 @@ struct DenoiseOptions {
   bool refine_unturn = true;  // faces the refinement turns over against its start stood back up (item 15)
   int refine_vertex_iterations = 20;  // vertex update iterations towards the filtered normals
   bool refine_own_normals = true;  // the last round(s), every round when untangled, on the faces' own normals (item 16)
+  bool refine_fit_each_pass = true;  // from kNoisePerRound's noise on, vertices fitted after every pass (item 24)
   double refine_drift_step = kRoundDriftStep;        // with rounds set by the noise (experiments)
   double refine_converged_step = kRoundConvergedStep;
   double refine_extra_rounds_factor = kExtraRoundsFactor;
@@ -160,6 +168,7 @@ struct DenoiseReport {
                                      // first (RMS, in sigma * mean edge)
   bool refine_round_undone = false;  // the last of refine_steps was undone and ended the rounds
   int refine_normal_passes = 0;  // per round, as used
+  bool refine_fit_each_pass = false;  // the vertices were fitted after every pass (kFitEachPassIterations)
   double refine_scaled = 1;      // < 1: the refinement's move was scaled down to the noise's RMS
   double refine_near_creases = -1;  // share of the faces given the narrow range width (-1: one width for all)
   int refine_unturned_faces = 0;  // turned over by the refinement against its start, stood back up

@@ -1,5 +1,7 @@
 #include "filters/guided_normal_denoise.h"
 
+#include <algorithm>
+
 #include "mesh/mesh_checks.h"
 #include "reconstruction/normal_vertex_update.h"
 #include "mesh/sharp_features.h"
@@ -14,17 +16,20 @@ bool guided_normal_denoise(const Positions& positions, const Faces& faces, const
     return false;
   }
   result = positions;
+  // Each step filters the normals `passes` times, then fits the vertices to them.
+  const int steps = options.fit_each_pass ? std::max(1, options.normal_passes) : 1;
+  const int passes = options.fit_each_pass ? std::min(1, options.normal_passes) : options.normal_passes;
   for (int round = 0; round < options.rounds; ++round) {
-    Positions normals;
-    const bool filtered = options.guidance == NormalGuidance::OwnNormal
-                              ? bilateral_face_normals(result, faces, options.normal_passes, options.sigma, normals, error,
-                                                       options.face_sigma)
-                              : guided_face_normals(result, faces, options.normal_passes, options.sigma, normals, error,
-                                                    options.face_sigma);
-    if (!filtered) return false;
-    if (progress) progress((round + 0.8) / options.rounds);
-    result = fit_vertices_to_normals(result, faces, normals, options.vertex_iterations);
-    if (progress) progress((round + 1.0) / options.rounds);
+    for (int step = 0; step < steps; ++step) {
+      Positions normals;
+      const bool filtered =
+          options.guidance == NormalGuidance::OwnNormal
+              ? bilateral_face_normals(result, faces, passes, options.sigma, normals, error, options.face_sigma)
+              : guided_face_normals(result, faces, passes, options.sigma, normals, error, options.face_sigma);
+      if (!filtered) return false;
+      result = fit_vertices_to_normals(result, faces, normals, options.vertex_iterations);
+      if (progress) progress((round + (step + 1.0) / steps) / options.rounds);
+    }
   }
   if (!result.allFinite()) {
     error = "the vertex update produced non-finite positions";

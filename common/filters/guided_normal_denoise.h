@@ -4,6 +4,9 @@
 // the most consistent patch around each face (sharp_features.h, guided_face_normals), then the
 // vertices are fitted to the filtered normals (Sun et al. 2007, normal_vertex_update.h); the
 // two steps are repeated `rounds` times, each round filtering the normals of the last result.
+// With `fit_each_pass` the vertices are fitted after every normal pass instead of once after all
+// of them, as the authors' code does (its defaults: 20 such steps of 10 vertex iterations): each
+// pass then filters normals that the surface can take.
 // No HHT: the strongest of the field's denoisers that this project has, the baseline the HHT
 // denoiser is measured against, and the refinement stage of that denoiser. With
 // NormalGuidance::OwnNormal it is bilateral normal filtering (Zheng et al. 2011), the other
@@ -27,7 +30,8 @@ struct GuidedNormalDenoiseOptions {
   int rounds = 1;              // normal filtering + vertex update, repeated
   int normal_passes = 8;       // guided normal filtering passes per round
   double sigma = 0.35;         // range width on unit guidance normals (~20 degrees)
-  int vertex_iterations = 20;  // vertex update iterations per round
+  int vertex_iterations = 20;  // vertex update iterations per round, or per pass with fit_each_pass
+  bool fit_each_pass = false;  // vertices fitted after every normal pass (see above)
   std::vector<double> face_sigma;  // each face's own range width instead of `sigma` (empty: none)
   NormalGuidance guidance = NormalGuidance::ConsistentPatch;
 };

@@ -39,7 +39,7 @@ TEST(MeshlabserverDenoise, NoisyCubeDenoisedThenCompared) {
   load(run, denoised);
   // light noise: the refinement's round (and the converging one after it) on the faces' own
   // normals, no guided round to give widths
-  EXPECT_NE(run.log.find("round(s) of 8 normal filtering passes and 20 vertex update iterations; all on the faces' own "
+  EXPECT_NE(run.log.find("round(s) of 8 normal filtering passes, then 20 vertex update iterations; all on the faces' own "
                          "normals (bilateral normal filtering, range width 0.35)"), std::string::npos) << run.log;
   EXPECT_EQ(run.log.find("guided rounds: range width"), std::string::npos) << run.log;
   const ServerRun before = compare(data_mesh("cube-meshed"), output_path("cube_noisy.ply"), "compare_noisy");

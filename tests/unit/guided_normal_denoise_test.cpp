@@ -50,6 +50,25 @@ TEST(GuidedNormalDenoise, NoRoundIsTheIdentityAndBadOptionsAreRefused) {
   EXPECT_FALSE(guided_normal_denoise(m.positions, Faces(0, 3), {}, out, error));
 }
 
+// Fitting the vertices after every normal pass (the authors' scheme) is the same as rounds of
+// one pass each, and not the same as one fit after all the passes.
+TEST(GuidedNormalDenoise, FittingAfterEveryPassIsRoundsOfOnePass) {
+  const test::ArrayMesh m = test::load_data_mesh("fandisk");
+  const Positions noisy = add_gaussian_noise(m.positions, m.faces, 20, NoiseDirection::Normal, 11);
+  for (NormalGuidance guidance : {NormalGuidance::ConsistentPatch, NormalGuidance::OwnNormal}) {
+    GuidedNormalDenoiseOptions each_pass, one_pass_rounds, fit_once;
+    each_pass.guidance = one_pass_rounds.guidance = fit_once.guidance = guidance;
+    each_pass.normal_passes = fit_once.normal_passes = 4;
+    each_pass.vertex_iterations = one_pass_rounds.vertex_iterations = fit_once.vertex_iterations = 10;
+    each_pass.fit_each_pass = true;
+    one_pass_rounds.rounds = 4;
+    one_pass_rounds.normal_passes = 1;
+    const Positions stepped = denoise(noisy, m.faces, each_pass);
+    EXPECT_EQ(stepped, denoise(noisy, m.faces, one_pass_rounds));
+    EXPECT_GT((stepped - denoise(noisy, m.faces, fit_once)).cwiseAbs().maxCoeff(), 1e-3 * mean_edge_length(m.positions, m.faces));
+  }
+}
+
 // Each face's own range width: the same width for all is the uniform filter to the bit, a wider
 // one smooths more, and a list of the wrong length or with a width of 0 is refused.
 TEST(GuidedNormalDenoise, RangeWidthPerFace) {
