@@ -1824,6 +1824,20 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "FE") {  // the denoiser fitting the vertices after every pass from one round's noise on, and once per round
+    std::string err;
+    for (bool each : {true, false}) {
+      DenoiseOptions d;
+      d.refine_fit_each_pass = each;
+      Positions out;
+      DenoiseReport rep;
+      if (!feature_preserving_denoise(noisy, f, d, out, rep, err)) { std::printf("%s\n", err.c_str()); return 1; }
+      char label[80];
+      std::snprintf(label, sizeof label, "denoise (sig %.3f, fit each pass %d)", rep.sigma_used, int(rep.refine_fit_each_pass));
+      show(label, out);
+    }
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "k") {  // normal error near and away from the clean creases
     std::string err;
     Positions nas, den;

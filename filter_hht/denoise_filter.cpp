@@ -224,7 +224,7 @@ bool apply(FilterRun& run) {
                                            : QString("%1 on the faces' own normals (bilateral normal filtering, range width %2)")
                                                  .arg(which).arg(hht::kOwnNormalSigma);
     const QString fitting = report.refine_fit_each_pass
-                                ? QString("each followed by %1 vertex update iterations (the noise is heavy)")
+                                ? QString("each followed by %1 vertex update iterations (heavy or tangling noise)")
                                       .arg(hht::kFitEachPassIterations)
                                 : QString("then %1 vertex update iterations").arg(o.refine_vertex_iterations);
     run.log(QString("  refinement: %1 round(s) of %2 normal filtering passes, %3; %4")

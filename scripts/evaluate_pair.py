@@ -191,7 +191,7 @@ def main():
     folded = q.folded_faces(clean_v, clean_faces)
     diagonal = float(np.linalg.norm(clean_v.max(0) - clean_v.min(0)))
     rows = [("noisy input", q.metrics(clean_v, clean_faces, folded, diagonal, noisy_v))]
-    labels = {key: label for key, label, _ in q.methods()}
+    labels = {key: q.SHORT[key] for key, _, _ in q.methods()}  # the labels in full: evaluate_quality.py
     xml = {key: x for key, _, x in q.methods()}
     for key in args.methods.split(","):
         if key not in xml:

@@ -287,7 +287,7 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
           static_cast<double>(std::count(near_creases.begin(), near_creases.end(), 1)) / static_cast<double>(near_creases.size());
     }
     refine.vertex_iterations = options.refine_vertex_iterations;
-    report.refine_fit_each_pass = options.refine_fit_each_pass && sigma >= kNoisePerRound;
+    report.refine_fit_each_pass = options.refine_fit_each_pass && (sigma >= kNoisePerRound || report.untangled);
     if (report.refine_fit_each_pass) {
       refine.fit_each_pass = true;
       refine.vertex_iterations = kFitEachPassIterations;

@@ -27,7 +27,8 @@
 //    (Zheng et al. 2011: the range kernel on each face's own normal, kOwnNormalSigma wide): once
 //    the patch guidance has taken heavy noise down, or at light noise from the start, it keeps
 //    small features and creases that the patches blur; from the untangling's smoothing, which
-//    has little noise left, every round is (docs/quality.md item 16);
+//    has little noise left, every round is (docs/quality.md item 16); from one round's noise on,
+//    or from the untangled start, the vertices are fitted after every pass (kFitEachPassIterations);
 //  - surfaces without sharp creases (crease_contrast.h of the smoothed mesh below kCreaseContrast)
 //    get the adaptive smoothing, cross-validated cut-off, as the result instead: the refinement
 //    facets them; not a mesh with exactly flat parts (its noise estimate capped by the flat
@@ -68,11 +69,12 @@ constexpr double kRoundDriftStep = 0.18;
 constexpr double kRoundConvergedStep = 0.10;
 constexpr double kExtraRoundsFactor = 1.5;
 
-// From one round's noise on (sigma >= kNoisePerRound) the refinement fits the vertices after every
-// normal pass, kFitEachPassIterations vertex update iterations each, as the guided filter's
-// authors do, instead of once after all passes: heavy noise leaves normals that no surface takes
-// (slivers, tangles), and filtering them on is wasted. At lighter noise the one fit stays: fitting
-// after each pass multiplies the vertex updates, which facet curved parts (docs/quality.md item 24).
+// From one round's noise on (sigma >= kNoisePerRound), or from the untangled start, the refinement
+// fits the vertices after every normal pass, kFitEachPassIterations vertex update iterations each,
+// as the guided filter's authors do, instead of once after all passes: heavy noise, or noise that
+// folded the triangulation, leaves normals that no surface takes (slivers, tangles), and filtering
+// them on is wasted. At lighter noise the one fit stays: fitting after every pass multiplies the
+// vertex updates, which facet curved parts (docs/quality.md item 24).
 constexpr int kFitEachPassIterations = 10;
 
 // The refinement may move vertices by at most this times the noise's RMS (sqrt(3) sigma); a
@@ -143,7 +145,7 @@ struct DenoiseOptions {
   bool refine_unturn = true;  // faces the refinement turns over against its start stood back up (item 15)
   int refine_vertex_iterations = 20;  // vertex update iterations towards the filtered normals
   bool refine_own_normals = true;  // the last round(s), every round when untangled, on the faces' own normals (item 16)
-  bool refine_fit_each_pass = true;  // from kNoisePerRound's noise on, vertices fitted after every pass (item 24)
+  bool refine_fit_each_pass = true;  // from kNoisePerRound's noise on or untangled, vertices fitted after every pass (item 24)
   double refine_drift_step = kRoundDriftStep;        // with rounds set by the noise (experiments)
   double refine_converged_step = kRoundConvergedStep;
   double refine_extra_rounds_factor = kExtraRoundsFactor;
