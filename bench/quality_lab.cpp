@@ -1829,11 +1829,15 @@ int main(int argc, char** argv) {
     for (bool each : {true, false}) {
       DenoiseOptions d;
       d.refine_fit_each_pass = each;
+      if (std::getenv("LAB_NOROUTE")) d.smooth_surfaces_by_smoothing = false;
       Positions out;
       DenoiseReport rep;
       if (!feature_preserving_denoise(noisy, f, d, out, rep, err)) { std::printf("%s\n", err.c_str()); return 1; }
-      char label[80];
-      std::snprintf(label, sizeof label, "denoise (sig %.3f, fit each pass %d)", rep.sigma_used, int(rep.refine_fit_each_pass));
+      double refinement = 0;
+      for (const StageTime& t : rep.stages) if (std::string(t.stage) == "refinement") refinement = t.seconds;
+      char label[96];
+      std::snprintf(label, sizeof label, "denoise (sig %.3f, fit each pass %d, refinement %.2f s)", rep.sigma_used,
+                    int(rep.refine_fit_each_pass), refinement);
       show(label, out);
     }
     return 0;

@@ -641,8 +641,8 @@ def main():
                 "E_a (degrees) / RMS (1e-4 of the diagonal) against the clean mesh; a cell marked *worse* is "
                 "above the noisy input's E_a: a denoiser made the mesh worse than it was. Not in the summary "
                 "counts above. *denoise.mlx, noise given*: %s." % GIVEN_LABEL, "",
-                "| case | noisy input | smooth.mlx | denoise.mlx | denoise.mlx, noise given | guided_denoise.mlx "
-                "| bilateral_normal_denoise.mlx | Taubin |", "|---|---|---|---|---|---|---|---|"]
+                "| case | noisy input | %s |" % " | ".join(SHORT[k] for k in LIGHT_METHODS),
+                "|---|---|" + "---|" * len(LIGHT_METHODS)]
         worse = {k: 0 for k in LIGHT_METHODS}
         for mesh, model, level in light_cases:
             row = results[case_name(mesh, model, level)]
