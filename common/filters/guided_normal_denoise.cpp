@@ -1,7 +1,5 @@
 #include "filters/guided_normal_denoise.h"
 
-#include <algorithm>
-
 #include "mesh/mesh_checks.h"
 #include "reconstruction/normal_vertex_update.h"
 #include "mesh/sharp_features.h"
@@ -16,20 +14,32 @@ bool guided_normal_denoise(const Positions& positions, const Faces& faces, const
     return false;
   }
   result = positions;
-  // Each step filters the normals `passes` times, then fits the vertices to them.
-  const int steps = options.fit_each_pass ? std::max(1, options.normal_passes) : 1;
-  const int passes = options.fit_each_pass ? std::min(1, options.normal_passes) : options.normal_passes;
+  const bool own_normals = options.guidance == NormalGuidance::OwnNormal;
   for (int round = 0; round < options.rounds; ++round) {
-    for (int step = 0; step < steps; ++step) {
-      Positions normals;
-      const bool filtered =
-          options.guidance == NormalGuidance::OwnNormal
-              ? bilateral_face_normals(result, faces, passes, options.sigma, normals, error, options.face_sigma)
-              : guided_face_normals(result, faces, passes, options.sigma, normals, error, options.face_sigma);
-      if (!filtered) return false;
-      result = fit_vertices_to_normals(result, faces, normals, options.vertex_iterations);
-      if (progress) progress((round + (step + 1.0) / steps) / options.rounds);
+    if (options.fit_each_pass && options.normal_passes > 0) {
+      int pass = 0;
+      const auto fit = [&](const Positions& p, const Positions& normals) {
+        Positions fitted = fit_vertices_to_normals(p, faces, normals, options.vertex_iterations);
+        if (progress) progress((round + ++pass / static_cast<double>(options.normal_passes)) / options.rounds);
+        return fitted;
+      };
+      Positions next;
+      if (!filter_face_normals_refitting(result, faces, options.normal_passes, options.sigma, own_normals, fit, next,
+                                         error, options.face_sigma))
+        return false;
+      result.swap(next);
+      continue;
     }
+    Positions normals;
+    const bool filtered =
+        own_normals ? bilateral_face_normals(result, faces, options.normal_passes, options.sigma, normals, error,
+                                             options.face_sigma)
+                    : guided_face_normals(result, faces, options.normal_passes, options.sigma, normals, error,
+                                          options.face_sigma);
+    if (!filtered) return false;
+    if (progress) progress((round + 0.8) / options.rounds);
+    result = fit_vertices_to_normals(result, faces, normals, options.vertex_iterations);
+    if (progress) progress((round + 1.0) / options.rounds);
   }
   if (!result.allFinite()) {
     error = "the vertex update produced non-finite positions";

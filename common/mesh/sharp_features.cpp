@@ -423,9 +423,7 @@ bool detect_sharp_features(const Positions& positions, const Faces& faces, const
 }
 
 // filter_normals on a checked mesh and per-face widths (empty, or one positive width per face).
-static bool filtered_face_normals(const Positions& positions, const Faces& faces, int iterations, double sigma,
-                                  const std::vector<double>& face_sigma, bool own_normals, Positions& normals,
-                                  std::string& error) {
+static bool check_face_sigma(const Faces& faces, const std::vector<double>& face_sigma, std::string& error) {
   if (!face_sigma.empty() && static_cast<Eigen::Index>(face_sigma.size()) != faces.rows()) {
     error = "one range width per face expected";
     return false;
@@ -435,9 +433,31 @@ static bool filtered_face_normals(const Positions& positions, const Faces& faces
       error = "range widths must be positive";
       return false;
     }
+  return true;
+}
+
+static bool filtered_face_normals(const Positions& positions, const Faces& faces, int iterations, double sigma,
+                                  const std::vector<double>& face_sigma, bool own_normals, Positions& normals,
+                                  std::string& error) {
   Topology topo;
-  if (!build_topology(faces, static_cast<int>(positions.rows()), topo, error)) return false;
+  if (!check_face_sigma(faces, face_sigma, error) ||
+      !build_topology(faces, static_cast<int>(positions.rows()), topo, error))
+    return false;
   normals = filter_normals(topo, face_geometry(positions, faces), iterations, sigma, face_sigma, own_normals);
+  return true;
+}
+
+bool filter_face_normals_refitting(const Positions& positions, const Faces& faces, int passes, double sigma,
+                                   bool own_normals,
+                                   const std::function<Positions(const Positions&, const Positions&)>& fit,
+                                   Positions& result, std::string& error, const std::vector<double>& face_sigma) {
+  Topology topo;
+  if (!check_face_sigma(faces, face_sigma, error) ||
+      !build_topology(faces, static_cast<int>(positions.rows()), topo, error))
+    return false;
+  result = positions;
+  for (int pass = 0; pass < passes; ++pass)
+    result = fit(result, filter_normals(topo, face_geometry(result, faces), 1, sigma, face_sigma, own_normals));
   return true;
 }
 

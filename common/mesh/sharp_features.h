@@ -24,6 +24,7 @@
 
 #include "mesh/mesh_arrays.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -80,5 +81,15 @@ bool guided_face_normals(const Positions& positions, const Faces& faces, int ite
 // itself left out (as in the authors' code); face_sigma as there. Fails like guided_face_normals.
 bool bilateral_face_normals(const Positions& positions, const Faces& faces, int iterations, double sigma,
                             Positions& normals, std::string& error, const std::vector<double>& face_sigma = {});
+
+// `passes` single passes of guided (or, with own_normals, bilateral) normal filtering with the
+// positions refitted between them: each pass filters the face normals of the current positions,
+// then positions = fit(positions, filtered normals). The same as calling guided_face_normals (or
+// bilateral_face_normals) with one pass and fitting, `passes` times, with the mesh's topology built
+// once. Fails like guided_face_normals.
+bool filter_face_normals_refitting(const Positions& positions, const Faces& faces, int passes, double sigma,
+                                   bool own_normals,
+                                   const std::function<Positions(const Positions&, const Positions&)>& fit,
+                                   Positions& result, std::string& error, const std::vector<double>& face_sigma = {});
 
 }  // namespace hht
