@@ -57,7 +57,10 @@ void declare(const MeshDocument&, RichParameterList& p) {
                      "the normals (0 to 1000). 0: no refinement (with the paper's stage on, the paper's method "
                      "alone)."));
   p.addParam(RichInt("refineVertexIterations", d.refine_vertex_iterations, "Refinement: vertex update iterations",
-                     "Iterations of the vertex update towards the filtered normals (Sun et al. 2007; 0 to 1000)."));
+                     "Iterations of the vertex update towards the filtered normals after each round's passes (Sun et "
+                     "al. 2007; 0 to 1000). Where the noise is heavy (an estimate of 10% of the mean edge or more) or "
+                     "the untangling started from the smoothing, the vertices are fitted after every pass instead, 10 "
+                     "iterations each."));
   p.addParam(RichBool("refineOwnNormals", d.refine_own_normals, "Refinement: last round on own normals",
                       "The refinement's last round (every round when it starts from the untangling's smoothing) filters "
                       "each face normal with a range kernel on the faces' own normals (bilateral normal filtering, Zheng "
