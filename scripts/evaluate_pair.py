@@ -105,7 +105,7 @@ def renumber(noisy_v, noisy_faces, clean_v, clean_faces):
     """order[i] = the noisy vertex that is clean vertex i, by walking the faces from a face whose
     corners' nearest clean vertices form a clean face; None if the triangulations differ."""
     directed = {}
-    for f, (a, b, c) in enumerate(clean_faces):
+    for a, b, c in clean_faces:
         for x, y, z in ((a, b, c), (b, c, a), (c, a, b)):
             directed[(x, y)] = z
     near, _ = nearest(noisy_v, clean_v)
