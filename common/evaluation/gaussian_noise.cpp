@@ -15,26 +15,31 @@ double mean_edge_length(const Positions& p, const Faces& f) {
 }
 
 Positions add_gaussian_noise(const Positions& positions, const Faces& faces, double percent_of_mean_edge,
-                             NoiseDirection direction, unsigned seed) {
+                             NoiseDirection direction, unsigned seed, double moved_share) {
   const double sigma = percent_of_mean_edge / 100.0 * mean_edge_length(positions, faces);
   const Positions normals = area_weighted_vertex_normals(positions, faces);
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> gauss(0.0, 1.0);
+  // Which vertices move: a stream of its own, so that each moves as the full noise would move it.
+  std::mt19937_64 picker(seed ^ 0x9e3779b97f4a7c15ULL);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
   Positions out = positions;
   for (Eigen::Index i = 0; i < positions.rows(); ++i) {
     Eigen::RowVector3d dir = normals.row(i);
     if (dir.squaredNorm() == 0) continue;  // no face, no normal: left in place
+    Eigen::RowVector3d move;
     if (direction == NoiseDirection::Isotropic) {
-      out.row(i) += sigma * Eigen::RowVector3d(gauss(rng), gauss(rng), gauss(rng));
-      continue;
+      move = sigma * Eigen::RowVector3d(gauss(rng), gauss(rng), gauss(rng));
+    } else {
+      if (direction == NoiseDirection::Random) {
+        do {
+          dir = Eigen::RowVector3d(gauss(rng), gauss(rng), gauss(rng));
+        } while (dir.squaredNorm() < 1e-24);
+        dir.normalize();
+      }
+      move = sigma * gauss(rng) * dir;
     }
-    if (direction == NoiseDirection::Random) {
-      do {
-        dir = Eigen::RowVector3d(gauss(rng), gauss(rng), gauss(rng));
-      } while (dir.squaredNorm() < 1e-24);
-      dir.normalize();
-    }
-    out.row(i) += sigma * gauss(rng) * dir;
+    if (moved_share >= 1 || uniform(picker) < moved_share) out.row(i) += move;
   }
   return out;
 }

@@ -14,9 +14,11 @@ enum class NoiseDirection { Random, Normal, Isotropic };
 
 double mean_edge_length(const Positions& positions, const Faces& faces);
 
-// Returns the displaced positions; vertices of no face do not move.
+// Returns the displaced positions; vertices of no face do not move. With `moved_share` below 1,
+// impulsive noise (the denoising literature's other model): each vertex moves with that
+// probability, the others stay exactly where they were.
 Positions add_gaussian_noise(const Positions& positions, const Faces& faces, double percent_of_mean_edge,
-                             NoiseDirection direction, unsigned seed);
+                             NoiseDirection direction, unsigned seed, double moved_share = 1);
 
 // The RMS of the displacement from `clean` to `noisy` along the clean mesh's vertex normals, over
 // the noisy mesh's mean edge: the noise level the smoothing and denoising filters estimate and

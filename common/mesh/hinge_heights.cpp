@@ -5,7 +5,8 @@
 
 namespace hht {
 
-std::vector<double> hinge_heights(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency) {
+void for_each_hinge(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency,
+                    const std::function<void(const Hinge&)>& visit) {
   // The two vertices facing each edge (a, b), a < b, kept in a's slot for b of the adjacency:
   // linear in the mesh and no larger than the adjacency itself, even on millions of vertices.
   constexpr int kNone = -1, kMore = -2;  // no face yet; a third face (non-manifold)
@@ -22,7 +23,6 @@ std::vector<double> hinge_heights(const Positions& positions, const Faces& faces
       else second[slot] = kMore;
     }
 
-  std::vector<double> heights;
   for (int a = 0; a < adjacency.vertices(); ++a)
     for (const int* at = adjacency.begin(a); at != adjacency.end(a); ++at) {
       const size_t slot = static_cast<size_t>(at - adjacency.neighbours.data());
@@ -40,8 +40,13 @@ std::vector<double> hinge_heights(const Positions& positions, const Faces& faces
       const double beta = (foot - A).cross(C - A).dot(normal) / twice_area;
       const double gamma = (B - A).cross(foot - A).dot(normal) / twice_area;
       const double alpha = 1 - beta - gamma;
-      heights.push_back(height / std::sqrt(1 + alpha * alpha + beta * beta + gamma * gamma));
+      visit(Hinge{a, *at, first[slot], second[slot], height / std::sqrt(1 + alpha * alpha + beta * beta + gamma * gamma)});
     }
+}
+
+std::vector<double> hinge_heights(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency) {
+  std::vector<double> heights;
+  for_each_hinge(positions, faces, adjacency, [&](const Hinge& h) { heights.push_back(h.height); });
   return heights;
 }
 

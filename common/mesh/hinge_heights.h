@@ -14,13 +14,24 @@
 #include "mesh/mesh_arrays.h"
 #include "mesh/vertex_adjacency.h"
 
+#include <functional>
 #include <vector>
 
 namespace hht {
 
-// One value per interior edge of two faces (boundary and non-manifold edges, edges of
-// zero-area faces, and a face against its own duplicate are left out), in the length unit of
-// `positions`, signed. `adjacency` is vertex_adjacency() of the same faces.
+// The hinge of an interior edge (a, b): the faces (a, b, c) and (a, b, d), and d's height as above.
+struct Hinge {
+  int a, b, c, d;
+  double height;
+};
+
+// Calls visit once per interior edge of two faces (boundary and non-manifold edges, edges of
+// zero-area faces, and a face against its own duplicate are left out); heights in the length
+// unit of `positions`, signed. `adjacency` is vertex_adjacency() of the same faces.
+void for_each_hinge(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency,
+                    const std::function<void(const Hinge&)>& visit);
+
+// The heights of for_each_hinge, in its order.
 std::vector<double> hinge_heights(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency);
 
 }  // namespace hht

@@ -32,5 +32,23 @@ TEST(GaussianNoise, ItsPartAlongTheNormalsIsWhatTheFiltersRead) {
   }
 }
 
+// Impulsive noise: about the given share of the vertices moves, each as the full noise would move
+// it; the others stay to the bit. A share of 1 is the Gaussian noise of old.
+TEST(GaussianNoise, ImpulsiveNoiseMovesAShareOfTheVertices) {
+  const test::ArrayMesh s = test::sphere(4);
+  for (NoiseDirection d : {NoiseDirection::Normal, NoiseDirection::Random, NoiseDirection::Isotropic}) {
+    const Positions all = add_gaussian_noise(s.positions, s.faces, 10, d, 3);
+    EXPECT_EQ(add_gaussian_noise(s.positions, s.faces, 10, d, 3, 1.0), all);
+    const Positions some = add_gaussian_noise(s.positions, s.faces, 10, d, 3, 0.2);
+    int moved = 0;
+    for (Eigen::Index v = 0; v < s.positions.rows(); ++v) {
+      if (some.row(v) == s.positions.row(v)) continue;
+      ++moved;
+      EXPECT_EQ(some.row(v), all.row(v)) << v;
+    }
+    EXPECT_NEAR(moved, 0.2 * s.positions.rows(), 0.03 * s.positions.rows()) << static_cast<int>(d);
+  }
+}
+
 }  // namespace
 }  // namespace hht
