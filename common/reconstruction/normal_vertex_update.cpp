@@ -7,7 +7,7 @@
 namespace hht {
 
 Positions fit_vertices_to_normals(const Positions& positions, const Faces& faces, const Positions& face_normals,
-                                  int iterations) {
+                                  int iterations, const std::vector<unsigned char>& fixed) {
   const int n = static_cast<int>(positions.rows());
   const int m = static_cast<int>(faces.rows());
   // Each vertex's faces that have a target, in ascending order (a face listed once per corner at
@@ -36,8 +36,8 @@ Positions fit_vertices_to_normals(const Positions& positions, const Faces& faces
           const Eigen::RowVector3d normal = face_normals.row(incident[j]);
           step += normal * normal.dot(centroids.row(incident[j]) - v.row(i));
         }
-        moved.row(i) = first[i + 1] > first[i] ? Eigen::RowVector3d(v.row(i) + step / (first[i + 1] - first[i]))
-                                               : Eigen::RowVector3d(v.row(i));
+        const bool moves = first[i + 1] > first[i] && !(static_cast<size_t>(i) < fixed.size() && fixed[static_cast<size_t>(i)]);
+        moved.row(i) = moves ? Eigen::RowVector3d(v.row(i) + step / (first[i + 1] - first[i])) : Eigen::RowVector3d(v.row(i));
       }
     });
     v.swap(moved);

@@ -7,10 +7,13 @@
 
 #include "mesh/mesh_arrays.h"
 
+#include <vector>
+
 namespace hht {
 
-// `face_normals`: one unit target normal per face (a zero row leaves that face out).
+// `face_normals`: one unit target normal per face (a zero row leaves that face out). `fixed`:
+// empty, or one flag per vertex, 1 for a vertex that stays where it is.
 Positions fit_vertices_to_normals(const Positions& positions, const Faces& faces, const Positions& face_normals,
-                                  int iterations);
+                                  int iterations, const std::vector<unsigned char>& fixed = {});
 
 }  // namespace hht

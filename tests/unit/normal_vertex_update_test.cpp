@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 namespace hht {
 namespace {
@@ -61,6 +62,26 @@ TEST(NormalVertexUpdate, PlaneTargetsFlattenANoisyGrid) {
   EXPECT_LT(fitted.col(2).tail(noisy.rows() - 1).array().abs().maxCoeff() + 1e-12,
             0.5 * noisy.col(2).array().abs().maxCoeff());
   EXPECT_LT((fitted.leftCols(2) - noisy.leftCols(2)).cwiseAbs().maxCoeff(), 1e-12);  // moves along the targets only
+}
+
+// Fixed vertices stay to the bit while the others are fitted; an all-free mask is no mask.
+TEST(NormalVertexUpdate, FixedVerticesStay) {
+  test::ArrayMesh m = test::grid(30, 30);
+  Positions noisy = m.positions;
+  for (Eigen::Index i = 0; i < noisy.rows(); ++i) noisy(i, 2) = 0.05 * std::sin(3.0 * i);
+  Positions targets(m.faces.rows(), 3);
+  targets.rowwise() = Eigen::RowVector3d(0, 0, 1);
+  std::vector<unsigned char> fixed(static_cast<size_t>(noisy.rows()), 0);
+  for (size_t i = 0; i < fixed.size(); i += 3) fixed[i] = 1;
+  const Positions fitted = fit_vertices_to_normals(noisy, m.faces, targets, 20, fixed);
+  int moved = 0;
+  for (Eigen::Index i = 0; i < noisy.rows(); ++i) {
+    if (fixed[static_cast<size_t>(i)]) EXPECT_EQ(fitted.row(i), noisy.row(i)) << i;
+    else moved += fitted.row(i) != noisy.row(i);
+  }
+  EXPECT_GT(moved, noisy.rows() / 2);
+  EXPECT_EQ(fit_vertices_to_normals(noisy, m.faces, targets, 20, std::vector<unsigned char>(fixed.size(), 0)),
+            fit_vertices_to_normals(noisy, m.faces, targets, 20));
 }
 
 }  // namespace
