@@ -356,6 +356,12 @@ TEST(MeshlabserverParameters, NoiseSigmaDirectionSeed) {
     const Positions expected = add_gaussian_noise(in.positions, in.faces, f(7), directions[direction], 5);
     expect_positions(saved_positions(run), expected, in.diagonal, tag);
   }
+  // impulsive: a share of the vertices moved, the others where they were
+  const ServerRun run = run_resource(data_mesh("fandisk"), "add_noise.mlx",
+                                   {{"sigmaPercent", "7"}, {"direction", "1"}, {"sharePercent", "30"}, {"seed", "5"}}, "noise_share");
+  const Positions expected = add_gaussian_noise(in.positions, in.faces, f(7), NoiseDirection::Normal, 5, f(30) / 100);
+  EXPECT_NE(expected, add_gaussian_noise(in.positions, in.faces, f(7), NoiseDirection::Normal, 5));
+  expect_positions(saved_positions(run), expected, in.diagonal, "noise_share");
 }
 
 TEST(MeshlabserverParameters, BilateralSigmasAndPasses) {
