@@ -421,6 +421,9 @@ int main(int argc, char** argv) {
   } else if (argc > 4 && std::string(argv[4]) == "axis") {  // a scanner's line of sight: along one fixed direction (1, 2, 3)/|.|
     const Eigen::RowVector3d axis = Eigen::RowVector3d(1, 2, 3).normalized();
     for (int i = 0; i < n; ++i) noisy.row(i) += g(rng) * axis;
+  } else if (argc > 4 && std::string(argv[4]) == "impulsive") {  // impulsive: a share of the vertices (LAB_IMPULSE, 0.5) moved along the normals
+    noisy = add_gaussian_noise(clean, f, 100 * level, NoiseDirection::Normal, std::getenv("LAB_SEED") ? std::atoi(std::getenv("LAB_SEED")) : 11,
+                               std::getenv("LAB_IMPULSE") ? std::atof(std::getenv("LAB_IMPULSE")) : 0.5);
   } else if (argc > 4 && std::string(argv[4]) == "random") {  // the paper's model: a random direction per vertex
     noisy = add_gaussian_noise(clean, f, 100 * level, NoiseDirection::Random, std::getenv("LAB_SEED") ? std::atoi(std::getenv("LAB_SEED")) : 11);
   } else {
@@ -1746,6 +1749,12 @@ int main(int argc, char** argv) {
       guided_normal_denoise(noisy, f, b, g, err);
       show("bilateral normal", g);
       std::printf("  crease contrast of bilateral normal %.2f\n", crease_contrast(g, f));
+      GuidedNormalDenoiseOptions a;  // the guided filter in its authors' scheme (item 24)
+      a.rounds = 20;
+      a.normal_passes = 1;
+      a.vertex_iterations = 10;
+      guided_normal_denoise(noisy, f, a, g, err);
+      show("guided (authors' scheme)", g);
     }
     return 0;
   }
@@ -1822,6 +1831,17 @@ int main(int argc, char** argv) {
       std::snprintf(label, sizeof label, "denoise (u%d, %d stood up, refinement %.2f s)", int(rep.untangled), rep.refine_unturned_faces, refinement);
       show(label, out);
     }
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[3]) == "SP") {  // spikes off exactly flat hinges (impulsive noise) and the noise estimate
+    std::string err;
+    HamiltonianCycle cycle;
+    hamiltonian_cycle(f, n, CycleOptions{}, cycle, err);
+    NoiseEstimate ne;
+    estimate_noise(noisy, f, cycle, EmdOptions{}, ne, err);
+    std::printf("  spikes %d of %d surrounded (share %.3f, impulsive %d, spikes' RMS height %.4f); estimate imf %.4f hinge %.4f "
+                "sigma %.4f; truth %.4f\n", ne.spikes.spikes, ne.spikes.surrounded, ne.spikes.share(), int(ne.impulsive()),
+                ne.spike_sigma / h, ne.imf_sigma / h, ne.hinge_sigma / h, ne.relative(), noise_along_normals(clean, noisy, f));
     return 0;
   }
   if (argc > 3 && std::string(argv[3]) == "FE") {  // the denoiser fitting the vertices after every pass from one round's noise on, and once per round

@@ -83,6 +83,7 @@ bool apply(FilterRun& run) {
                 .arg(report.unturned_faces));
   if (const QString line = tangential_share_line(report.tangential_share); !line.isEmpty()) run.log(line);
   run.log(smoothing_finish_line(report));
+  if (const QString line = untouched_vertices_line(report.untouched_vertices_kept); !line.isEmpty()) run.log(line);
   run.log(stage_times_line(report.stages));
   return true;
 }

@@ -252,6 +252,7 @@ bool apply(FilterRun& run) {
   } else {
     run.log("  no refinement");
   }
+  if (const QString line = untouched_vertices_line(report.untouched_vertices_kept); !line.isEmpty()) run.log(line);
   run.log(stage_times_line(report.stages));
   return true;
 }

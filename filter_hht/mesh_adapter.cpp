@@ -2,6 +2,7 @@
 
 #include "mesh/mesh_checks.h"
 #include "mesh/value_range.h"
+#include "reconstruction/keep_untouched_vertices.h"
 
 #include <vcg/complex/algorithms/update/color.h>
 
@@ -100,12 +101,25 @@ QString noise_estimate_text(const hht::NoiseEstimate& e) {
                    "their edges, which no estimate tells from noise: if this mesh had little or no noise, undo and "
                    "give noisePercent")
         .arg(100 * hht::kCleanDetailReads, 0, 'f', 0);
+  if (e.impulsive())
+    return QString("estimated: impulsive noise, %1 vertices stand off exactly flat surroundings (%2% of the vertices "
+                   "amid them): the flat hinges read the part the noise left alone and do not cap the estimate; the "
+                   "finest IMF read %3%, the spikes %4%")
+        .arg(e.spikes.spikes).arg(100 * e.spikes.share(), 0, 'f', 1).arg(100 * e.imf_sigma / e.mean_edge, 0, 'f', 1)
+        .arg(100 * std::sqrt(e.spikes.share()) * e.spike_sigma / e.mean_edge, 0, 'f', 1);
   if (!e.capped()) return "estimated from the finest IMF";
   return QString("estimated: the finest IMF read %1%, capped at %2 x the flat hinges' %3%: exactly flat parts, "
                  "so the IMF read the triangulation, not noise%4")
       .arg(100 * e.imf_sigma / e.mean_edge, 0, 'f', 1).arg(hht::kFlatHingeBound)
       .arg(100 * e.hinge_sigma / e.mean_edge, 0, 'f', 2)
       .arg(e.relative() < hht::kNoiseFree ? "; the mesh reads as noise-free and is left as it is" : "");
+}
+
+QString untouched_vertices_line(int kept) {
+  if (kept == 0) return QString();
+  return QString("  impulsive noise: %1 vertices on exactly flat hinges, which the noise left alone, kept as they were; "
+                 "the others fitted to the result's face normals (%2 iterations)")
+      .arg(kept).arg(hht::kUntouchedFitIterations);
 }
 
 QStringList imf_summary_lines(const std::vector<hht::ImfSummary>& imfs) {

@@ -53,6 +53,9 @@ QString stage_times_line(const std::vector<hht::StageTime>& stages);
 // it, both readings and what the cap means.
 QString noise_estimate_text(const hht::NoiseEstimate& estimate);
 
+// The log line of the vertices impulsive noise left alone, kept by the filter (empty when none).
+QString untouched_vertices_line(int kept);
+
 // How the adaptive smoothing was finished (steps 3 and 4b): "  finish chosen by recorrupted risk
 // among 4: slides along the surface by Taubin's smoothing, face-normal pass kept (its risk 2.1%
 // below that of the capped slides without the pass)", or that the risks could not be scored.

@@ -8,6 +8,7 @@
 #include "mesh/mesh_checks.h"
 #include "evaluation/gaussian_noise.h"
 #include "filters/guided_normal_denoise.h"
+#include "reconstruction/keep_untouched_vertices.h"
 #include "reconstruction/normal_vertex_update.h"
 
 #include <algorithm>
@@ -143,10 +144,11 @@ bool paper_stage(const Positions& positions, const Faces& faces, const DenoiseOp
 
 }  // namespace
 
-bool feature_preserving_denoise(const Positions& positions, const Faces& faces, const DenoiseOptions& options,
-                                Positions& result, DenoiseReport& report, std::string& error,
-                                const Progress& progress) {
-  report = DenoiseReport{};
+namespace {
+
+// The denoiser over every vertex; feature_preserving_denoise then keeps those impulsive noise left alone.
+bool denoise_every_vertex(const Positions& positions, const Faces& faces, const DenoiseOptions& options,
+                          Positions& result, DenoiseReport& report, std::string& error, const Progress& progress) {
   StageClock clock(report.stages);
   auto step = [&](int percent, const char* what) {
     if (progress) progress(percent, what);
@@ -208,6 +210,7 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     smoothing.unturn_wrinkles = false;  // the tangle test counts the faces this smoothing turns
     smoothing.face_normal_pass = false;  // the refinement was measured from the smoothing without them
     smoothing.taubin_slide = false;
+    smoothing.keep_untouched = false;  // feature_preserving_denoise keeps them at the end
     smoothing.first_order = options.untangle_first_order;
     smoothing.mu_scale = options.untangle_mu_scale;
     NoiseAdaptiveSmoothingReport smoothing_report;
@@ -242,6 +245,7 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     if (route && no_creases && !report.flat_parts_refined && !report.smoothing_distorts) {
       step(40, "No sharp creases: adaptive smoothing");
       smoothing = NoiseAdaptiveSmoothingOptions{};  // the adaptive smoothing's own filter
+      smoothing.keep_untouched = false;
       smoothing.noise = sigma;
       smoothing.unbiased_risk = options.noise > 0;  // the user's noise level: its cut-off by Stein's risk
       if (!noise_adaptive_smooth(positions, faces, smoothing, result, smoothing_report, error,
@@ -336,6 +340,17 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
     clock.done("refinement");
   }
   step(100, "Done");
+  return true;
+}
+
+}  // namespace
+
+bool feature_preserving_denoise(const Positions& positions, const Faces& faces, const DenoiseOptions& options,
+                                Positions& result, DenoiseReport& report, std::string& error,
+                                const Progress& progress) {
+  report = DenoiseReport{};
+  if (!denoise_every_vertex(positions, faces, options, result, report, error, progress)) return false;
+  if (!report.noise_free) report.untouched_vertices_kept = keep_untouched_vertices(positions, faces, result);
   return true;
 }
 

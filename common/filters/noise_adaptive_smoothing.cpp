@@ -8,6 +8,7 @@
 #include "mesh/vertex_normals.h"
 #include "reconstruction/biharmonic_low_pass.h"
 #include "reconstruction/cutoff_selection.h"
+#include "reconstruction/keep_untouched_vertices.h"
 #include "reconstruction/face_normal_pass.h"
 #include "reconstruction/flip_guard.h"
 #include "reconstruction/recorrupted_risk.h"
@@ -392,6 +393,7 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
     error = "the solve produced non-finite positions";
     return false;
   }
+  if (options.keep_untouched) report.untouched_vertices_kept = keep_untouched_vertices(positions, faces, result);
   const Eigen::VectorXd moves = (result - positions).rowwise().norm();
   report.max_displacement = moves.maxCoeff();
   report.rms_displacement = std::sqrt(moves.squaredNorm() / n);

@@ -123,6 +123,7 @@ struct NoiseAdaptiveSmoothingOptions {
   bool unturn_wrinkles = true;  // step 7 (the denoiser's untangling counts the smoothing's own turns)
   bool face_normal_pass = true;  // step 4b where its risk is lower (the denoiser's untangling: off)
   bool taubin_slide = true;      // step 3 by Taubin's slide where its risk is lower (the untangling: off)
+  bool keep_untouched = true;    // impulsive noise: the vertices it left alone kept (keep_untouched_vertices.h; the denoiser does its own)
   bool tangential_share = true;  // step 3's cap scaled by the tangential noise the offsets allow (experiments: off)
   // Experiments (bench/quality_lab, docs/quality.md items 8-10): the tangential cap's factor
   // (infinity: no cap), the noise law's scale, how much weaker than the noise law's cut-off the
@@ -164,6 +165,7 @@ struct NoiseAdaptiveSmoothingReport {
   int unturned_faces = 0;      // still turned, few: moved back until no longer turned (step 7)
   bool face_normal_pass = false;  // step 4b was kept
   bool taubin_slide = false;      // step 3 took Taubin's slide instead of the cap
+  int untouched_vertices_kept = 0;  // impulsive noise: vertices of exactly flat hinges kept as they were
   int finishes_scored = 0;        // finishes (step 3's two ways, with step 4b or not) scored against each other
   bool finish_risk_scored = false;  // their risks were scored (false: one finish allowed, or a copy's solve failed)
   double finish_risk_change = 0;  // the chosen finish's recorrupted risk over the plain one's (cap, no pass), minus 1

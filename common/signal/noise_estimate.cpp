@@ -2,6 +2,7 @@
 
 #include "cycle/cycle_signal.h"
 #include "evaluation/gaussian_noise.h"
+#include "mesh/flat_hinge_spikes.h"
 #include "mesh/hinge_heights.h"
 #include "mesh/mesh_checks.h"
 #include "mesh/vertex_adjacency.h"
@@ -34,7 +35,7 @@ double folded_normal_quantile(double q) {
 }
 
 bool may_be_surface_detail(const NoiseEstimate& estimate) {
-  return !estimate.capped() && estimate.relative() >= kNoiseFree && estimate.relative() <= kCleanDetailReads;
+  return !estimate.capped() && !estimate.impulsive() && estimate.relative() >= kNoiseFree && estimate.relative() <= kCleanDetailReads;
 }
 
 Eigen::VectorXd one_ring_heights(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency) {
@@ -91,7 +92,14 @@ bool estimate_noise(const Positions& positions, const Faces& faces, const Hamilt
   const auto at = hinges.begin() + static_cast<std::ptrdiff_t>(kHingeQuantile * static_cast<double>(hinges.size() - 1));
   std::nth_element(hinges.begin(), at, hinges.end());
   out.hinge_sigma = *at / folded_normal_quantile(kHingeQuantile);
-  out.sigma = std::min(out.imf_sigma, kFlatHingeBound * out.hinge_sigma);
+  out.spikes = flat_hinge_spikes(positions, faces, adjacency);
+  double squares = 0;
+  for (size_t v = 0; v < out.spikes.role.size(); ++v)
+    if (out.spikes.role[v] == kSpike) squares += h(static_cast<Eigen::Index>(v)) * h(static_cast<Eigen::Index>(v));
+  out.spikes.role.clear();
+  out.spike_sigma = out.spikes.spikes > 0 ? std::sqrt(squares / out.spikes.spikes) : 0;
+  if (out.impulsive()) out.sigma = std::max(out.imf_sigma, std::sqrt(out.spikes.share()) * out.spike_sigma);
+  else out.sigma = std::min(out.imf_sigma, kFlatHingeBound * out.hinge_sigma);
   return true;
 }
 

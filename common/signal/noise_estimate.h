@@ -26,10 +26,18 @@
 // noise on CAD meshes, where it is nearer the truth than the IMF's floor (docs/quality.md).
 // It reads 0 only when a tenth of the hinges or more are exactly flat: a noisy scan with a
 // planar cut or a filled hole keeps its estimate (such caps hold a small share of its hinges).
+// Nor is the cap taken under impulsive noise (a share of the vertices moved, the others left
+// where they were), which leaves the untouched flat parts exactly flat: where enough vertices
+// stand off flat surroundings as spikes (mesh/flat_hinge_spikes.h), the flat hinges read the
+// part the noise missed. The MAD of a mixture of moved and unmoved vertices reads it low
+// (blade with a tenth of its vertices moved: 0.05 mean edges for 0.15), so sigma is then the
+// larger of the IMF's estimate and sqrt(spike share) times the spikes' RMS one-ring height, the
+// noise's RMS over the vertices amid flat hinges.
 #pragma once
 
 #include "signal/emd.h"
 #include "cycle/hamiltonian_cycle.h"
+#include "mesh/flat_hinge_spikes.h"
 #include "mesh/mesh_arrays.h"
 #include "mesh/vertex_adjacency.h"
 
@@ -44,7 +52,10 @@ struct NoiseEstimate {
   int samples = 0;           // IMF 1 samples the MAD was taken over
   double imf_sigma = 0;      // the finest IMF's estimate, before the cap
   double hinge_sigma = 0;    // the flat hinges' estimate (0 on a mesh with fewer than kMinHinges)
+  FlatHingeSpikes spikes;     // vertices standing off flat surroundings (role left empty)
+  double spike_sigma = 0;     // the spikes' RMS one-ring height (length unit)
   bool capped() const { return sigma < imf_sigma; }
+  bool impulsive() const { return spikes.impulsive(); }  // no cap; sigma read from the spikes too
 };
 
 // Below this sigma (in mean edges) an estimated noise counts as none: the filters that estimate
@@ -59,6 +70,7 @@ constexpr double kNoiseFree = 1e-4;
 constexpr double kHingeQuantile = 0.1;
 constexpr double kFlatHingeBound = 2.5;
 constexpr int kMinHinges = 50;
+
 
 // Clean meshes without flat parts read up to this (sigma / mean edge) from their own detail at the
 // edge scale: b9_mesh 0.140, bones 0.102, femur 0.102, bull 0.090 (docs/quality.md, "Goals not
