@@ -350,7 +350,11 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
                                 const Progress& progress) {
   report = DenoiseReport{};
   if (!denoise_every_vertex(positions, faces, options, result, report, error, progress)) return false;
-  if (!report.noise_free) report.untouched_vertices_kept = keep_untouched_vertices(positions, faces, result);
+  if (!report.noise_free) {
+    StageClock clock(report.stages);
+    report.untouched_vertices_kept = keep_untouched_vertices(positions, faces, result);
+    clock.done("impulsive noise check");
+  }
   return true;
 }
 

@@ -393,7 +393,10 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
     error = "the solve produced non-finite positions";
     return false;
   }
-  if (options.keep_untouched) report.untouched_vertices_kept = keep_untouched_vertices(positions, faces, result);
+  if (options.keep_untouched) {
+    report.untouched_vertices_kept = keep_untouched_vertices(positions, faces, result);
+    clock.done("impulsive noise check");
+  }
   const Eigen::VectorXd moves = (result - positions).rowwise().norm();
   report.max_displacement = moves.maxCoeff();
   report.rms_displacement = std::sqrt(moves.squaredNorm() / n);
