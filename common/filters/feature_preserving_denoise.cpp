@@ -350,7 +350,8 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
                                 const Progress& progress) {
   report = DenoiseReport{};
   if (!denoise_every_vertex(positions, faces, options, result, report, error, progress)) return false;
-  if (!report.noise_free) {
+  // An estimate that read no impulsive noise read the same input: no need to look again.
+  if (!report.noise_free && (options.noise > 0 || report.noise.impulsive())) {
     StageClock clock(report.stages);
     report.untouched_vertices_kept = keep_untouched_vertices(positions, faces, result);
     clock.done("impulsive noise check");

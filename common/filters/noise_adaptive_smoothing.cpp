@@ -393,7 +393,8 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
     error = "the solve produced non-finite positions";
     return false;
   }
-  if (options.keep_untouched) {
+  // An estimate that read no impulsive noise read the same input: no need to look again.
+  if (options.keep_untouched && (options.noise > 0 || report.noise.impulsive())) {
     report.untouched_vertices_kept = keep_untouched_vertices(positions, faces, result);
     clock.done("impulsive noise check");
   }

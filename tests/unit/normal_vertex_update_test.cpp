@@ -46,13 +46,23 @@ TEST(NormalVertexUpdate, GatherIsTheSweepOverTheFaces) {
   EXPECT_EQ(fit_vertices_to_normals(noisy, m.faces, targets, 0), noisy);
 }
 
+// A 30 x 30 grid in the plane z = 0 with its heights made bumpy, and its plane's normal as every
+// face's target.
+struct BumpyGrid {
+  test::ArrayMesh mesh = test::grid(30, 30);
+  Positions noisy, targets;
+  BumpyGrid() : noisy(mesh.positions), targets(mesh.faces.rows(), 3) {
+    for (Eigen::Index i = 0; i < noisy.rows(); ++i) noisy(i, 2) = 0.05 * std::sin(3.0 * i);
+    targets.rowwise() = Eigen::RowVector3d(0, 0, 1);
+  }
+};
+
 // Targets of a plane flatten a noisy plane; a vertex whose faces all have zero targets stays.
 TEST(NormalVertexUpdate, PlaneTargetsFlattenANoisyGrid) {
-  test::ArrayMesh m = test::grid(30, 30);
-  Positions noisy = m.positions;
-  for (Eigen::Index i = 0; i < noisy.rows(); ++i) noisy(i, 2) = 0.05 * std::sin(3.0 * i);
-  Positions targets(m.faces.rows(), 3);
-  targets.rowwise() = Eigen::RowVector3d(0, 0, 1);
+  BumpyGrid g;
+  const test::ArrayMesh& m = g.mesh;
+  const Positions& noisy = g.noisy;
+  Positions& targets = g.targets;
   for (int k = 0; k < 3; ++k) {  // the faces of vertex 0 left out
     for (Eigen::Index f = 0; f < m.faces.rows(); ++f)
       if (m.faces(f, k) == 0) targets.row(f).setZero();
@@ -66,11 +76,9 @@ TEST(NormalVertexUpdate, PlaneTargetsFlattenANoisyGrid) {
 
 // Fixed vertices stay to the bit while the others are fitted; an all-free mask is no mask.
 TEST(NormalVertexUpdate, FixedVerticesStay) {
-  test::ArrayMesh m = test::grid(30, 30);
-  Positions noisy = m.positions;
-  for (Eigen::Index i = 0; i < noisy.rows(); ++i) noisy(i, 2) = 0.05 * std::sin(3.0 * i);
-  Positions targets(m.faces.rows(), 3);
-  targets.rowwise() = Eigen::RowVector3d(0, 0, 1);
+  const BumpyGrid g;
+  const test::ArrayMesh& m = g.mesh;
+  const Positions &noisy = g.noisy, &targets = g.targets;
   std::vector<unsigned char> fixed(static_cast<size_t>(noisy.rows()), 0);
   for (size_t i = 0; i < fixed.size(); i += 3) fixed[i] = 1;
   const Positions fitted = fit_vertices_to_normals(noisy, m.faces, targets, 20, fixed);
