@@ -53,6 +53,7 @@ const Refusal kRefusals[] = {
     {"ramp", "curvature_signal.mlx", {{"rampPercentile", "80"}}, "the colour ramp clipping must lie in [0, 50]"},
     {"bins", "hilbert_spectra.mlx", {{"bins", "0"}}, "the histogram bins must lie in [1, 10000]"},
     {"noise_sigma", "add_noise.mlx", {{"sigmaPercent", "1e6"}}, "sigma must lie in [0, 1000]"},
+    {"noise_share", "add_noise.mlx", {{"sharePercent", "150"}}, "share of vertices moved must lie in [0, 100]"},
     {"bilateral_radius", "bilateral.mlx", {{"sigmaC", "1000"}}, "sigma_c must lie in [0.01, 10]"},
     {"nlm_radius", "nonlocal_means.mlx", {{"eta1", "1e6"}}, "eta1 must lie in [0.01, 10]"},
     {"nlm_iterations", "nonlocal_means.mlx", {{"iterations", "1000000"}}, "iterations must lie in [0, 1000]"},
