@@ -422,8 +422,9 @@ int main(int argc, char** argv) {
   } else if (argc > 4 && std::string(argv[4]) == "axis") {  // a scanner's line of sight: along one fixed direction (1, 2, 3)/|.|
     const Eigen::RowVector3d axis = Eigen::RowVector3d(1, 2, 3).normalized();
     for (int i = 0; i < n; ++i) noisy.row(i) += g(rng) * axis;
-  } else if (argc > 4 && std::string(argv[4]) == "impulsive") {  // impulsive: a share of the vertices (LAB_IMPULSE, 0.5) moved along the normals
-    noisy = add_gaussian_noise(clean, f, 100 * level, NoiseDirection::Normal, std::getenv("LAB_SEED") ? std::atoi(std::getenv("LAB_SEED")) : 11,
+  } else if (argc > 4 && std::string(argv[4]) == "impulsive") {  // impulsive: a share of the vertices (LAB_IMPULSE, 0.5) moved along the normals (LAB_IMPULSERANDOM: random directions)
+    noisy = add_gaussian_noise(clean, f, 100 * level, std::getenv("LAB_IMPULSERANDOM") ? NoiseDirection::Random : NoiseDirection::Normal,
+                               std::getenv("LAB_SEED") ? std::atoi(std::getenv("LAB_SEED")) : 11,
                                std::getenv("LAB_IMPULSE") ? std::atof(std::getenv("LAB_IMPULSE")) : 0.5);
   } else if (argc > 4 && std::string(argv[4]) == "random") {  // the paper's model: a random direction per vertex
     noisy = add_gaussian_noise(clean, f, 100 * level, NoiseDirection::Random, std::getenv("LAB_SEED") ? std::atoi(std::getenv("LAB_SEED")) : 11);
