@@ -507,6 +507,31 @@ def render(work, out, files, titles, azimuth=35, elevation=25):
                           stdout=subprocess.DEVNULL)
 
 
+def against_noisy_table(results, cases, keys, bold_best):
+    """A table of (case name, row label) by method, each cell E_a / RMS marked *worse* above the noisy
+    input's E_a (the row's best E_a in bold if bold_best); returns its lines and, per method, the cases
+    worse than the noisy input and the cases scored (not failed)."""
+    lines = ["| case | noisy input | %s |" % " | ".join(SHORT[k] for k in keys), "|---|---|" + "---|" * len(keys)]
+    worse, scored = {k: 0 for k in keys}, {k: 0 for k in keys}
+    for name, label in cases:
+        row = results[name]
+        valid = [row[k]["E_a"] for k in keys if "error" not in row[k]]
+        best = min(valid) if bold_best and valid else None
+        cells = ["%.2f / %.0f" % (row["noisy"]["E_a"], row["noisy"]["RMS"])]
+        for k in keys:
+            r = row[k]
+            if "error" in r:
+                cells.append("failed")
+                continue
+            above = r["E_a"] > row["noisy"]["E_a"]
+            worse[k] += above
+            scored[k] += 1
+            ea = "%.2f" % r["E_a"]
+            cells.append("%s / %.0f%s" % ("**%s**" % ea if r["E_a"] == best else ea, r["RMS"], " *worse*" if above else ""))
+        lines.append("| %s | %s |" % (label, " | ".join(cells)))
+    return lines, worse, scored
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--quick", action="store_true", help="2 organic + 2 CAD meshes, 2 levels each; "
@@ -655,49 +680,21 @@ def main():
         out += ["", "### The shipped scripts at light noise (%d%%)" % LIGHT_LEVEL, "",
                 "E_a (degrees) / RMS (1e-4 of the diagonal) against the clean mesh; a cell marked *worse* is "
                 "above the noisy input's E_a: a denoiser made the mesh worse than it was. Not in the summary "
-                "counts above. *denoise.mlx, noise given*: %s." % GIVEN_LABEL, "",
-                "| case | noisy input | %s |" % " | ".join(SHORT[k] for k in LIGHT_METHODS),
-                "|---|---|" + "---|" * len(LIGHT_METHODS)]
-        worse = {k: 0 for k in LIGHT_METHODS}
-        for mesh, model, level in light_cases:
-            row = results[case_name(mesh, model, level)]
-            cells = ["%.2f / %.0f" % (row["noisy"]["E_a"], row["noisy"]["RMS"])]
-            for k in LIGHT_METHODS:
-                r = row[k]
-                if "error" in r:
-                    cells.append("failed")
-                    continue
-                above = r["E_a"] > row["noisy"]["E_a"]
-                worse[k] += above
-                cells.append("%.2f / %.0f%s" % (r["E_a"], r["RMS"], " *worse*" if above else ""))
-            out.append("| %s %d%% %s | %s |" % (mesh, level, model, " | ".join(cells)))
-        out += ["", "Worse than the noisy input: " + ", ".join(
+                "counts above. *denoise.mlx, noise given*: %s." % GIVEN_LABEL, ""]
+        rows, worse, scored = against_noisy_table(
+            results, [(case_name(m, model, l), "%s %d%% %s" % (m, l, model)) for m, model, l in light_cases], LIGHT_METHODS, bold_best=False)
+        out += rows + ["", "Worse than the noisy input: " + ", ".join(
             "%s %d of %d" % (SHORT[k], worse[k], len(light_cases)) for k in LIGHT_METHODS) + "."]
     if impulsive_cases:
         out += ["", "### CAD meshes with impulsive noise", "",
                 "A share of the vertices moved by a Gaussian of %d%% of the mean edge along the normals, the "
                 "others left where they were (docs/quality.md item 25); E_a / RMS, the best E_a of each row in "
-                "bold, *worse* above the noisy input's E_a. Not in the summary counts above." % IMPULSIVE_SIGMA, "",
-                "| case | noisy input | %s |" % " | ".join(SHORT[k] for k in IMPULSIVE_METHODS),
-                "|---|---|" + "---|" * len(IMPULSIVE_METHODS)]
-        below = {k: 0 for k in IMPULSIVE_METHODS}
-        for mesh, model, level in impulsive_cases:
-            row = results[case_name(mesh, model, level)]
-            valid = [row[k]["E_a"] for k in IMPULSIVE_METHODS if "error" not in row[k]]
-            best = min(valid) if valid else None
-            cells = ["%.2f / %.0f" % (row["noisy"]["E_a"], row["noisy"]["RMS"])]
-            for k in IMPULSIVE_METHODS:
-                r = row[k]
-                if "error" in r:
-                    cells.append("failed")
-                    continue
-                below[k] += r["E_a"] <= row["noisy"]["E_a"]
-                ea = "%.2f" % r["E_a"]
-                cells.append("%s / %.0f%s" % ("**%s**" % ea if r["E_a"] == best else ea, r["RMS"],
-                                              " *worse*" if r["E_a"] > row["noisy"]["E_a"] else ""))
-            out.append("| %s %d%% of the vertices | %s |" % (mesh, level, " | ".join(cells)))
-        out += ["", "At or below the noisy input: " + ", ".join(
-            "%s %d of %d" % (SHORT[k], below[k], len(impulsive_cases)) for k in IMPULSIVE_METHODS) + "."]
+                "bold, *worse* above the noisy input's E_a. Not in the summary counts above." % IMPULSIVE_SIGMA, ""]
+        rows, worse, scored = against_noisy_table(
+            results, [(case_name(m, model, l), "%s %d%% of the vertices" % (m, l)) for m, model, l in impulsive_cases],
+            IMPULSIVE_METHODS, bold_best=True)
+        out += rows + ["", "At or below the noisy input: " + ", ".join(
+            "%s %d of %d" % (SHORT[k], scored[k] - worse[k], len(impulsive_cases)) for k in IMPULSIVE_METHODS) + "."]
     failures = [(n, k, r["error"]) for n, row in results.items() for k, r in row.items()
                 if isinstance(r, dict) and "error" in r]
     out += ["", "### Failures", ""]

@@ -52,8 +52,8 @@ struct NoiseEstimate {
   int samples = 0;           // IMF 1 samples the MAD was taken over
   double imf_sigma = 0;      // the finest IMF's estimate, before the cap
   double hinge_sigma = 0;    // the flat hinges' estimate (0 on a mesh with fewer than kMinHinges)
-  FlatHingeSpikes spikes;     // vertices standing off flat surroundings (role left empty)
-  double spike_sigma = 0;     // the spikes' RMS one-ring height (length unit)
+  FlatHingeSpikes spikes;    // vertices standing off flat surroundings (role left empty)
+  double spike_sigma = 0;    // the spikes' RMS one-ring height (length unit)
   bool capped() const { return sigma < imf_sigma; }
   bool impulsive() const { return spikes.impulsive(); }  // no cap; sigma read from the spikes too
 };
@@ -70,7 +70,6 @@ constexpr double kNoiseFree = 1e-4;
 constexpr double kHingeQuantile = 0.1;
 constexpr double kFlatHingeBound = 2.5;
 constexpr int kMinHinges = 50;
-
 
 // Clean meshes without flat parts read up to this (sigma / mean edge) from their own detail at the
 // edge scale: b9_mesh 0.140, bones 0.102, femur 0.102, bull 0.090 (docs/quality.md, "Goals not
