@@ -1,0 +1,59 @@
+#include "filters/spike_removal.h"
+
+#include "mesh/scattered_spikes.h"
+#include "util/parallel_for.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace hht {
+
+Positions remove_spikes(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency,
+                        SpikeRemovalReport& report) {
+  report = SpikeRemovalReport{};
+  const int n = adjacency.vertices();
+  Positions out = positions;
+  std::vector<unsigned char> moved(static_cast<size_t>(n), 0), spike(static_cast<size_t>(n), 0);
+  for (int round = 0; round < kRemovalRounds; ++round) {
+    const RingHeights ring = ring_heights(out, faces, adjacency);
+    const Eigen::VectorXd& h = ring.height;
+    parallel_for(0, n, [&](int first, int last) {
+      TwoRingScratch scratch;
+      for (int v = first; v < last; ++v) {
+        spike[static_cast<size_t>(v)] = 0;
+        if (adjacency.valence(v) < 3 || adjacency.boundary[static_cast<size_t>(v)]) continue;
+        const double a = std::abs(h[v]);
+        bool highest = a > kSpikeStandOff * mean_ring_edge(out, adjacency, v);
+        for (const int* j = adjacency.begin(v); j != adjacency.end(v) && highest; ++j) highest = a >= std::abs(h[*j]);
+        if (!highest) continue;
+        // Exactly flat surroundings (scale 0) are flat_hinge_spikes.h's: a CAD part's corners stand so.
+        const double scale = two_ring_height_quantile(h, adjacency, v, 0.5, scratch);
+        spike[static_cast<size_t>(v)] = scale > 0 && a > kRemovalScale * scale;
+      }
+    });
+    int count = 0;
+    for (int v = 0; v < n; ++v) {
+      if (!spike[static_cast<size_t>(v)]) continue;
+      // Each neighbour's height holds 1 / its valence of v's move, against it: the move that
+      // leaves v at its neighbours' mean height after the move.
+      double mean = 0, share = 0;
+      for (const int* j = adjacency.begin(v); j != adjacency.end(v); ++j) {
+        mean += h[*j];
+        share += 1.0 / adjacency.valence(*j);
+      }
+      mean /= adjacency.valence(v);
+      share /= adjacency.valence(v);
+      out.row(v) += (mean - h[v]) / (1 + share) * ring.normal.row(v);
+      report.moved_vertices += !moved[static_cast<size_t>(v)];
+      moved[static_cast<size_t>(v)] = 1;
+      ++count;
+    }
+    if (count == 0) break;
+    ++report.rounds;
+  }
+  report.sparse = report.moved_vertices <= kSparseSpikes * n;
+  return out;
+}
+
+}  // namespace hht
