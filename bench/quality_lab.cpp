@@ -296,7 +296,8 @@ NoiseAdaptiveSmoothingOptions lab_options() {
   if (const char* x = std::getenv("LAB_MOVERADIUS")) o.move_radius = std::atof(x);
   if (std::getenv("LAB_NOPASS")) o.face_normal_pass = false;  // item 20's face-normal pass off
   if (std::getenv("LAB_NOSLIDE")) o.taubin_slide = false;  // item 22's Taubin slide off
-  if (std::getenv("LAB_NOTSHARE")) o.tangential_share = false;  // item 21's tangential share off
+  if (std::getenv("LAB_NOTSHARE")) o.tangential_share = false;
+  if (std::getenv("LAB_NOSPIKES")) o.remove_scattered_spikes = false;  // item 26's spike removal off  // item 21's tangential share off
   if (const char* x = std::getenv("LAB_FINISH")) o.forced_finish = std::atoi(x);  // step 4b's finish forced (bits: 1 slide, 2 pass)
   if (const char* x = std::getenv("LAB_COPYSCALE")) o.copy_noise_scale = std::atof(x);  // the recorrupted copies' noise scaled
   return o;
@@ -1848,6 +1849,11 @@ int main(int argc, char** argv) {
     std::printf("  spikes %d of %d surrounded (share %.3f, impulsive %d, spikes' RMS height %.4f); estimate imf %.4f hinge %.4f "
                 "sigma %.4f; truth %.4f\n", ne.spikes.spikes, ne.spikes.surrounded, ne.spikes.share(), int(ne.impulsive()),
                 ne.spike_sigma / h, ne.imf_sigma / h, ne.hinge_sigma / h, ne.relative(), noise_along_normals(clean, noisy, f));
+    const auto scattered_start = std::chrono::steady_clock::now();
+    scattered_spikes(noisy, f, vertex_adjacency(f, n));
+    std::printf("  scattered spikes %d of %d (share %.4f, impulsive %d; read in %.3f s)\n", ne.scattered.spikes,
+                ne.scattered.interior, ne.scattered.share(), int(ne.scattered_impulsive()),
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - scattered_start).count());
     return 0;
   }
   if (argc > 3 && std::string(argv[3]) == "FE") {  // the denoiser fitting the vertices after every pass from one round's noise on, and once per round
@@ -2068,6 +2074,9 @@ int main(int argc, char** argv) {
                       r.face_normal_pass ? (r.taubin_slide ? " pass slide" : " pass") : (r.taubin_slide ? " slide" : ""));
         std::printf("  finish risk change %+.5f\n", r.finish_risk_change);
         std::printf("  tangential share %.3f\n", r.tangential_share);
+        if (r.spikes_removed)
+          std::printf("  scattered spikes %d of %d: %d vertices put back in %d rounds\n", r.noise.scattered.spikes,
+                      r.noise.scattered.interior, r.spike_removal.moved_vertices, r.spike_removal.rounds);
         show(name, out);
         if (std::getenv("LAB_TURNED")) {  // the faces left turned against the input: their tilts from the result's surface
           const Positions sn = area_weighted_vertex_normals(out, f), in_n = face_normals(noisy, f), out_n = face_normals(out, f);

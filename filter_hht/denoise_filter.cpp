@@ -188,7 +188,10 @@ bool apply(FilterRun& run) {
   if (report.features_detected)
     run.log(QString("  features: %1 vertices, %2 feature lines, %3 corners")
                 .arg(report.feature_vertices).arg(report.lines).arg(report.corners));
-  if (report.noise_free) {
+  if (const QString line = spike_removal_line(report.spikes_removed, report.spike_removal, static_cast<int>(positions.rows()));
+      !line.isEmpty())
+    run.log(line);
+  if (report.noise_free || report.spikes_removed) {
     run.log(stage_times_line(report.stages));
     return true;
   }

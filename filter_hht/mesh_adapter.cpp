@@ -101,6 +101,10 @@ QString noise_estimate_text(const hht::NoiseEstimate& e) {
                    "their edges, which no estimate tells from noise: if this mesh had little or no noise, undo and "
                    "give noisePercent")
         .arg(100 * hht::kCleanDetailReads, 0, 'f', 0);
+  if (e.scattered_impulsive())
+    return QString("estimated: impulsive noise, %1 vertices stand off their one-rings far beyond the heights around "
+                   "them (%2% of the vertices); the finest IMF read %3%")
+        .arg(e.scattered.spikes).arg(100 * e.scattered.share(), 0, 'f', 2).arg(100 * e.imf_sigma / e.mean_edge, 0, 'f', 1);
   if (e.impulsive())
     return QString("estimated: impulsive noise, %1 vertices stand off exactly flat surroundings (%2% of the vertices "
                    "amid them): the flat hinges read the part the noise left alone and do not cap the estimate; the "
@@ -120,6 +124,17 @@ QString untouched_vertices_line(int kept) {
   return QString("  impulsive noise: %1 vertices on exactly flat hinges, which the noise left alone, kept as they were; "
                  "the others fitted to the result's face normals (%2 iterations)")
       .arg(kept).arg(hht::kUntouchedFitIterations);
+}
+
+QString spike_removal_line(bool removed, const hht::SpikeRemovalReport& r, int vertices) {
+  if (r.moved_vertices == 0) return QString();
+  if (removed)
+    return QString("  impulsive noise: %1 spikes put back onto their neighbours' surface in %2 rounds; every other vertex "
+                   "left exactly as it was")
+        .arg(r.moved_vertices).arg(r.rounds);
+  return QString("  impulsive noise too dense for spike removal (it would move %1 of %2 vertices, over %3%): smoothed as "
+                 "any noise")
+      .arg(r.moved_vertices).arg(vertices).arg(100 * hht::kSparseSpikes, 0, 'f', 0);
 }
 
 QStringList imf_summary_lines(const std::vector<hht::ImfSummary>& imfs) {

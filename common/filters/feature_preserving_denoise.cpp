@@ -189,6 +189,21 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
     return true;
   };
 
+  // Impulsive noise read from scattered spikes: the spikes put back, every other vertex as it was
+  // (too dense for that: denoised as any noise).
+  if (!options.paper_stage && report.noise.scattered_impulsive()) {
+    step(20, "Impulsive noise: spike removal");
+    Positions despiked = remove_spikes(positions, faces, vertex_adjacency(faces, n), report.spike_removal);
+    clock.done("spike removal");
+    if (report.spike_removal.sparse) {
+      result.swap(despiked);
+      report.spikes_removed = true;
+      if (options.detect_features && options.show_features && !detect_features(99)) return false;
+      step(100, "Done");
+      return true;
+    }
+  }
+
   // No noise to remove: the input as it is (the paper's stage, when asked for, still runs).
   if (!(options.noise > 0) && sigma < kNoiseFree && !options.paper_stage) {
     report.noise_free = true;
@@ -351,7 +366,7 @@ bool feature_preserving_denoise(const Positions& positions, const Faces& faces, 
   report = DenoiseReport{};
   if (!denoise_every_vertex(positions, faces, options, result, report, error, progress)) return false;
   // An estimate that read no impulsive noise read the same input: no need to look again.
-  if (!report.noise_free && (options.noise > 0 || report.noise.impulsive())) {
+  if (!report.noise_free && (options.noise > 0 || report.noise.spikes.impulsive())) {
     StageClock clock(report.stages);
     report.untouched_vertices_kept = keep_untouched_vertices(positions, faces, result);
     clock.done("impulsive noise check");

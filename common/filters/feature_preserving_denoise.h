@@ -176,6 +176,8 @@ struct DenoiseReport {
   int refine_unturned_faces = 0;  // turned over by the refinement against its start, stood back up
   int refine_own_normal_rounds = 0;  // rounds done with the range kernel on the faces' own normals
   int untouched_vertices_kept = 0;  // impulsive noise: vertices of exactly flat hinges kept as they were (keep_untouched_vertices.h)
+  bool spikes_removed = false;  // impulsive noise read from scattered spikes: the result is the input despiked
+  SpikeRemovalReport spike_removal;  // when spikes_removed (filters/spike_removal.h)
   bool features_detected = false;  // report.type and feature_lines hold the input's features
   int feature_vertices = 0;
   int corners = 0;

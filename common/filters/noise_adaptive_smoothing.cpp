@@ -283,12 +283,23 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
     if (!estimate_noise(positions, faces, cycle, options.emd, report.noise, error)) return false;
     clock.done("noise estimate");
     sigma = report.noise.relative();
+    report.sigma_used = sigma;
     if (sigma < kNoiseFree) {
       report.noise_free = true;
-      report.sigma_used = sigma;
       result = positions;
       step(100, "Done");
       return true;
+    }
+    if (options.remove_scattered_spikes && report.noise.scattered_impulsive()) {
+      step(20, "Impulsive noise: spike removal");
+      Positions despiked = remove_spikes(positions, faces, vertex_adjacency(faces, n), report.spike_removal);
+      clock.done("spike removal");
+      if (report.spike_removal.sparse) {
+        result.swap(despiked);
+        report.spikes_removed = true;
+        step(100, "Done");
+        return true;
+      }
     }
   }
   report.sigma_used = sigma;
@@ -394,7 +405,7 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
     return false;
   }
   // An estimate that read no impulsive noise read the same input: no need to look again.
-  if (options.keep_untouched && (options.noise > 0 || report.noise.impulsive())) {
+  if (options.keep_untouched && (options.noise > 0 || report.noise.spikes.impulsive())) {
     report.untouched_vertices_kept = keep_untouched_vertices(positions, faces, result);
     clock.done("impulsive noise check");
   }

@@ -98,7 +98,8 @@ bool estimate_noise(const Positions& positions, const Faces& faces, const Hamilt
     if (out.spikes.role[v] == kSpike) squares += h(static_cast<Eigen::Index>(v)) * h(static_cast<Eigen::Index>(v));
   out.spikes.role.clear();
   out.spike_sigma = out.spikes.spikes > 0 ? std::sqrt(squares / out.spikes.spikes) : 0;
-  if (out.impulsive()) out.sigma = std::max(out.imf_sigma, std::sqrt(out.spikes.share()) * out.spike_sigma);
+  out.scattered = scattered_spikes(positions, faces, adjacency);
+  if (out.spikes.impulsive()) out.sigma = std::max(out.imf_sigma, std::sqrt(out.spikes.share()) * out.spike_sigma);
   else out.sigma = std::min(out.imf_sigma, kFlatHingeBound * out.hinge_sigma);
   return true;
 }

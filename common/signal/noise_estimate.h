@@ -39,6 +39,7 @@
 #include "cycle/hamiltonian_cycle.h"
 #include "mesh/flat_hinge_spikes.h"
 #include "mesh/mesh_arrays.h"
+#include "mesh/scattered_spikes.h"
 #include "mesh/vertex_adjacency.h"
 
 #include <string>
@@ -54,8 +55,12 @@ struct NoiseEstimate {
   double hinge_sigma = 0;    // the flat hinges' estimate (0 on a mesh with fewer than kMinHinges)
   FlatHingeSpikes spikes;    // vertices standing off flat surroundings (role left empty)
   double spike_sigma = 0;    // the spikes' RMS one-ring height (length unit)
+  ScatteredSpikes scattered;  // vertices standing off any surroundings (mesh/scattered_spikes.h)
   bool capped() const { return sigma < imf_sigma; }
-  bool impulsive() const { return spikes.impulsive(); }  // no cap; sigma read from the spikes too
+  // Impulsive noise read amid flat hinges (no cap; sigma read from the spikes too), or else from
+  // scattered spikes (the filters then remove the spikes: filters/spike_removal.h).
+  bool impulsive() const { return spikes.impulsive() || scattered_impulsive(); }
+  bool scattered_impulsive() const { return !spikes.impulsive() && scattered.impulsive(); }
 };
 
 // Below this sigma (in mean edges) an estimated noise counts as none: the filters that estimate

@@ -164,6 +164,30 @@ TEST(MeshlabserverDenoise, ImpulsiveNoiseIsReadAndWhatItLeftAloneKept) {
   }
 }
 
+// The same noise on an organic mesh (cow: no flat hinges): read from its scattered spikes, which
+// both scripts put back while the other vertices stay as they were, and say so; the normal error
+// falls below the noisy input's (before: the smoothing over every vertex raised it, 8.26 to 11.95
+// degrees in the lab).
+TEST(MeshlabserverDenoise, ScatteredSpikesAreReadAndRemoved) {
+  const std::vector<std::pair<std::string, std::string>> impulsive = {
+      {"sigmaPercent", "50"}, {"direction", "1"}, {"sharePercent", "10"}};
+  TriMesh noisy;
+  load(run_meshlabserver(data_mesh("cow"), chain_scripts("scattered_noise", {"add_noise.mlx"}, impulsive), "scattered_noisy"),
+       noisy);
+  const ServerRun before = compare(data_mesh("cow"), output_path("scattered_noisy.ply"), "scattered_compare_noisy");
+  ASSERT_EQ(before.exit_code, 0) << before.log;
+  for (const char* script : {"denoise.mlx", "smooth.mlx"}) {
+    const std::string tag = std::string("scattered_") + std::string(script).substr(0, std::string(script).size() - 4);
+    const ServerRun run = run_meshlabserver(data_mesh("cow"), chain_scripts(tag, {"add_noise.mlx", script}, impulsive), tag);
+    ASSERT_EQ(run.exit_code, 0) << run.log;
+    EXPECT_NE(run.log.find("stand off their one-rings"), std::string::npos) << run.log;
+    EXPECT_NE(run.log.find("spikes put back onto their neighbours' surface"), std::string::npos) << run.log;
+    const ServerRun after = compare(data_mesh("cow"), output_path(tag + ".ply"), tag + "_compare");
+    ASSERT_EQ(after.exit_code, 0) << after.log;
+    EXPECT_LT(logged(after.log, "E_a"), 0.85 * logged(before.log, "E_a")) << script << " " << logged(after.log, "E_a");
+  }
+}
+
 TEST(MeshlabserverDenoise, BadInputLeavesNothingBehind) {
   expect_bad_input_refused({"denoise.mlx", "bilateral.mlx", "compare.mlx"}, "denoise_bad");
 }
