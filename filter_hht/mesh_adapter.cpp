@@ -126,15 +126,15 @@ QString untouched_vertices_line(int kept) {
       .arg(kept).arg(hht::kUntouchedFitIterations);
 }
 
-QString spike_removal_line(bool removed, const hht::SpikeRemovalReport& r, int vertices) {
+QString spike_removal_line(bool removed, const hht::SpikeRemovalReport& r, int vertices, double despiked_sigma) {
   if (r.moved_vertices == 0) return QString();
   if (removed)
     return QString("  impulsive noise: %1 spikes put back onto their neighbours' surface in %2 rounds; every other vertex "
                    "left exactly as it was")
         .arg(r.moved_vertices).arg(r.rounds);
-  return QString("  impulsive noise too dense for spike removal (it would move %1 of %2 vertices, over %3%): smoothed as "
-                 "any noise")
-      .arg(r.moved_vertices).arg(vertices).arg(100 * hht::kSparseSpikes, 0, 'f', 0);
+  return QString("  impulsive noise too dense for the spike removal alone (it moved %1 of %2 vertices, over %3%): the "
+                 "despiked mesh filtered as any noise, its sigma read again at %4% of the mean edge")
+      .arg(r.moved_vertices).arg(vertices).arg(100 * hht::kSparseSpikes, 0, 'f', 0).arg(100 * despiked_sigma, 0, 'f', 1);
 }
 
 QStringList imf_summary_lines(const std::vector<hht::ImfSummary>& imfs) {

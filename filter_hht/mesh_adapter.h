@@ -57,8 +57,9 @@ QString noise_estimate_text(const hht::NoiseEstimate& estimate);
 QString untouched_vertices_line(int kept);
 
 // The log line of the spike removal (filters/spike_removal.h): what it moved, or that the noise was
-// too dense for it (empty when it did not run).
-QString spike_removal_line(bool removed, const hht::SpikeRemovalReport& report, int vertices);
+// too dense for it alone and the despiked mesh was filtered at `despiked_sigma` (empty when it did
+// not run).
+QString spike_removal_line(bool removed, const hht::SpikeRemovalReport& report, int vertices, double despiked_sigma);
 
 // How the adaptive smoothing was finished (steps 3 and 4b): "  finish chosen by recorrupted risk
 // among 4: slides along the surface by Taubin's smoothing, face-normal pass kept (its risk 2.1%

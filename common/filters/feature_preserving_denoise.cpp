@@ -191,7 +191,7 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
 
   // Impulsive noise read from scattered spikes: the spikes put back, every other vertex as it was
   // (too dense for that: denoised as any noise).
-  if (!options.paper_stage && report.noise.scattered_impulsive()) {
+  if (options.remove_scattered_spikes && !options.paper_stage && report.noise.scattered_impulsive()) {
     step(20, "Impulsive noise: spike removal");
     Positions despiked = remove_spikes(positions, faces, vertex_adjacency(faces, n), report.spike_removal);
     clock.done("spike removal");
@@ -202,6 +202,18 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
       step(100, "Done");
       return true;
     }
+    // Too dense for the removal alone: what it left denoised as any noise, its level read again
+    // (docs/quality.md item 26).
+    DenoiseOptions rest = options;
+    rest.remove_scattered_spikes = false;
+    DenoiseReport denoised;
+    if (!denoise_every_vertex(despiked, faces, rest, result, denoised, error, progress)) return false;
+    denoised.stages.insert(denoised.stages.begin(), report.stages.begin(), report.stages.end());
+    denoised.input_noise = report.noise;
+    denoised.spike_removal = report.spike_removal;
+    denoised.despiked_then_denoised = true;
+    report = std::move(denoised);
+    return true;
   }
 
   // No noise to remove: the input as it is (the paper's stage, when asked for, still runs).

@@ -114,6 +114,8 @@ constexpr double kUntangleMuScale = 0.233;
 
 struct DenoiseOptions {
   bool paper_stage = false;     // the paper's divide-and-conquer HHT stage before the refinement
+  bool remove_scattered_spikes = true;  // impulsive noise read from scattered spikes: removed first
+                                        // (filters/spike_removal.h; off: the despiked mesh's own run)
   double noise = 0;             // sigma / mean edge length; 0 or less: estimated
   bool untangle = true;         // start from the noise-adaptive smoothing when the input is tangled
   double untangle_first_order = kUntangleFirstOrder;  // that smoothing's filter (experiments)
@@ -177,7 +179,9 @@ struct DenoiseReport {
   int refine_own_normal_rounds = 0;  // rounds done with the range kernel on the faces' own normals
   int untouched_vertices_kept = 0;  // impulsive noise: vertices of exactly flat hinges kept as they were (keep_untouched_vertices.h)
   bool spikes_removed = false;  // impulsive noise read from scattered spikes: the result is the input despiked
-  SpikeRemovalReport spike_removal;  // when spikes_removed (filters/spike_removal.h)
+  SpikeRemovalReport spike_removal;  // when spikes_removed or despiked_then_denoised (filters/spike_removal.h)
+  bool despiked_then_denoised = false;  // too dense for the removal alone: its result denoised (noise: its estimate)
+  NoiseEstimate input_noise;   // when despiked_then_denoised: the input's estimate, which read the spikes
   bool features_detected = false;  // report.type and feature_lines hold the input's features
   int feature_vertices = 0;
   int corners = 0;

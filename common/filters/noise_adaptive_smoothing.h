@@ -126,7 +126,7 @@ struct NoiseAdaptiveSmoothingOptions {
   bool taubin_slide = true;      // step 3 by Taubin's slide where its risk is lower (the untangling: off)
   bool keep_untouched = true;    // impulsive noise: the vertices it left alone kept (keep_untouched_vertices.h; the denoiser does its own)
   bool tangential_share = true;  // step 3's cap scaled by the tangential noise the offsets allow (experiments: off)
-  bool remove_scattered_spikes = true;  // impulsive noise read from scattered spikes: removed instead (experiments: off)
+  bool remove_scattered_spikes = true;  // impulsive noise read from scattered spikes: removed first (off: the despiked mesh's own run)
   // Experiments (bench/quality_lab, docs/quality.md items 8-10): the tangential cap's factor
   // (infinity: no cap), the noise law's scale, how much weaker than the noise law's cut-off the
   // cross-validation may choose, the low-pass's first-order weight (0: second order only), the
@@ -169,7 +169,9 @@ struct NoiseAdaptiveSmoothingReport {
   bool taubin_slide = false;      // step 3 took Taubin's slide instead of the cap
   int untouched_vertices_kept = 0;  // impulsive noise: vertices of exactly flat hinges kept as they were
   bool spikes_removed = false;  // impulsive noise read from scattered spikes: the result is the input despiked
-  SpikeRemovalReport spike_removal;  // when spikes_removed
+  SpikeRemovalReport spike_removal;  // when spikes_removed or despiked_then_smoothed
+  bool despiked_then_smoothed = false;  // too dense for the removal alone: its result smoothed (noise: its estimate)
+  NoiseEstimate input_noise;   // when despiked_then_smoothed: the input's estimate, which read the spikes
   int finishes_scored = 0;        // finishes (step 3's two ways, with step 4b or not) scored against each other
   bool finish_risk_scored = false;  // their risks were scored (false: one finish allowed, or a copy's solve failed)
   double finish_risk_change = 0;  // the chosen finish's recorrupted risk over the plain one's (cap, no pass), minus 1
