@@ -1854,6 +1854,16 @@ int main(int argc, char** argv) {
     std::printf("  scattered spikes %d of %d (share %.4f, impulsive %d; read in %.3f s)\n", ne.scattered.spikes,
                 ne.scattered.interior, ne.scattered.share(), int(ne.scattered_impulsive()),
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - scattered_start).count());
+    if (ne.scattered.impulsive()) {  // what the removal leaves: the estimate and the reading again
+      SpikeRemovalReport removal;
+      const Positions despiked = remove_spikes(noisy, f, vertex_adjacency(f, n), removal);
+      NoiseEstimate again;
+      estimate_noise(despiked, f, cycle, EmdOptions{}, again, err);
+      std::printf("  removal moved %d (%.4f of the vertices) in %d rounds; estimate after %.4f (before %.4f, imf %.4f); "
+                  "scattered after %d (%.4f); truth left %.4f\n", removal.moved_vertices, double(removal.moved_vertices) / n,
+                  removal.rounds, again.relative(), ne.relative(), again.imf_sigma / h, again.scattered.spikes,
+                  again.scattered.share(), noise_along_normals(clean, despiked, f));
+    }
     return 0;
   }
   if (argc > 3 && std::string(argv[3]) == "FE") {  // the denoiser fitting the vertices after every pass from one round's noise on, and once per round
