@@ -18,6 +18,10 @@ Positions remove_spikes(const Positions& positions, const Faces& faces, const Ve
   for (int round = 0; round < kRemovalRounds; ++round) {
     const RingHeights ring = ring_heights(out, faces, adjacency);
     const Eigen::VectorXd& h = ring.height;
+    // Each vertex's offset from its ring's centroid across the normal: the triangulation's own
+    // irregularity, plus a moved vertex's move across the normal.
+    const Positions across = (out - ring.centroid) - ring.normal.cwiseProduct(h.replicate(1, 3));
+    const Eigen::VectorXd across_length = across.rowwise().norm();
     parallel_for(0, n, [&](int first, int last) {
       TwoRingScratch scratch;
       for (int v = first; v < last; ++v) {
@@ -33,6 +37,7 @@ Positions remove_spikes(const Positions& positions, const Faces& faces, const Ve
       }
     });
     int count = 0;
+    TwoRingScratch scratch;
     for (int v = 0; v < n; ++v) {
       if (!spike[static_cast<size_t>(v)]) continue;
       // Each neighbour's height holds 1 / its valence of v's move, against it: the move that
@@ -45,6 +50,10 @@ Positions remove_spikes(const Positions& positions, const Faces& faces, const Ve
       mean /= adjacency.valence(v);
       share /= adjacency.valence(v);
       out.row(v) += (mean - h[v]) / (1 + share) * ring.normal.row(v);
+      // A move across the normal too (noise in random directions): the offset across cut back to
+      // the two-ring's median one.
+      const double usual = two_ring_height_quantile(across_length, adjacency, v, 0.5, scratch);
+      if (across_length[v] > usual) out.row(v) -= (1 - usual / across_length[v]) * across.row(v);
       report.moved_vertices += !moved[static_cast<size_t>(v)];
       moved[static_cast<size_t>(v)] = 1;
       ++count;

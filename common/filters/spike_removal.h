@@ -7,7 +7,12 @@
 // degrees against the noisy input's 8.26, Taubin 13.50). In rounds, each vertex whose |height|
 // (mesh/scattered_spikes.h) is the largest of its closed one-ring and over kRemovalScale times
 // its two-ring's median is moved along its ring normal to its neighbours' mean height, as they
-// read after the move (the height a smooth surface through them gives it); a round can only
+// read after the move (the height a smooth surface through them gives it), and its offset from
+// their centroid across the normal is cut back to the two-ring's median offset (a move in a
+// random direction, the authors' other impulsive model, has a part across; noise along the
+// normals has none, and there this moves the vertex by less than the triangulation's own
+// irregularity: camel with a tenth of its vertices moved in random directions 5.52 to 3.60
+// degrees, along the normals 2.76 to 2.41, cow 5.05 to 5.04); a round can only
 // reveal spikes next to the ones it moved (a spike hides a moved neighbour's height), so the
 // rounds stop when none is left or after kRemovalRounds. Where the rounds moved more than kSparseSpikes of the vertices, the
 // noise is too dense for them alone (spikes next to spikes hide each other), and the filters go on

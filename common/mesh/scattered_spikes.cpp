@@ -9,13 +9,15 @@ namespace hht {
 
 RingHeights ring_heights(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency) {
   const int n = adjacency.vertices();
-  Positions centroid = Positions::Zero(n, 3);
+  RingHeights out;
+  Positions& centroid = out.centroid;
+  centroid = positions;
   for (int i = 0; i < n; ++i) {
     if (adjacency.valence(i) == 0) continue;
+    centroid.row(i).setZero();
     for (const int* j = adjacency.begin(i); j != adjacency.end(i); ++j) centroid.row(i) += positions.row(*j);
     centroid.row(i) /= adjacency.valence(i);
   }
-  RingHeights out;
   out.normal = Positions::Zero(n, 3);
   for (Eigen::Index f = 0; f < faces.rows(); ++f)
     for (int k = 0; k < 3; ++k) {

@@ -26,6 +26,7 @@ namespace hht {
 struct RingHeights {
   Eigen::VectorXd height;  // 0 where the vertex has no neighbour
   Positions normal;        // unit; 0 rows where the fan has no area
+  Positions centroid;      // c_i (the vertex itself where it has no neighbour)
 };
 RingHeights ring_heights(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency);
 
