@@ -9,12 +9,17 @@
 
 namespace hht {
 
+namespace {
+constexpr unsigned char kOffAlong = 1, kOffAcross = 2;  // how a spike stands off its ring
+}  // namespace
+
 Positions remove_spikes(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency,
                         SpikeRemovalReport& report) {
   report = SpikeRemovalReport{};
   const int n = adjacency.vertices();
   Positions out = positions;
-  std::vector<unsigned char> moved(static_cast<size_t>(n), 0), spike(static_cast<size_t>(n), 0);
+  std::vector<unsigned char> moved(static_cast<size_t>(n), 0), spike(static_cast<size_t>(n), 0),
+      off_across(static_cast<size_t>(n), 0);
   for (int round = 0; round < kRemovalRounds; ++round) {
     const RingHeights ring = ring_heights(out, faces, adjacency);
     const Eigen::VectorXd& h = ring.height;
@@ -30,12 +35,32 @@ Positions remove_spikes(const Positions& positions, const Faces& faces, const Ve
         const double a = std::abs(h[v]);
         bool highest = a > kSpikeStandOff * mean_ring_edge(out, adjacency, v);
         for (const int* j = adjacency.begin(v); j != adjacency.end(v) && highest; ++j) highest = a >= std::abs(h[*j]);
-        if (!highest) continue;
-        // Exactly flat surroundings (scale 0) are flat_hinge_spikes.h's: a CAD part's corners stand so.
-        const double scale = two_ring_height_quantile(h, adjacency, v, 0.5, scratch);
-        spike[static_cast<size_t>(v)] = scale > 0 && a > kRemovalScale * scale;
+        if (highest) {
+          // Exactly flat surroundings (scale 0) are flat_hinge_spikes.h's: a CAD part's corners stand so.
+          const double scale = two_ring_height_quantile(h, adjacency, v, 0.5, scratch);
+          spike[static_cast<size_t>(v)] = scale > 0 && a > kRemovalScale * scale ? kOffAlong : 0;
+        }
       }
     });
+    // Or across the normal: moved in a random direction, a vertex may stand off its ring's
+    // centroid mostly along the surface; the same test on its offset across the normal, for the
+    // vertices no spike found above touches (a spike shifts its neighbours' centroids).
+    parallel_for(0, n, [&](int first, int last) {
+      TwoRingScratch scratch;
+      for (int v = first; v < last; ++v) {
+        off_across[static_cast<size_t>(v)] = 0;
+        if (spike[static_cast<size_t>(v)] || adjacency.valence(v) < 3 || adjacency.boundary[static_cast<size_t>(v)]) continue;
+        const double t = across_length[v];
+        bool widest = t > kSpikeStandOff * mean_ring_edge(out, adjacency, v);
+        for (const int* j = adjacency.begin(v); j != adjacency.end(v) && widest; ++j)
+          widest = t >= across_length[*j] && spike[static_cast<size_t>(*j)] != kOffAlong;
+        if (!widest) continue;
+        const double scale = two_ring_height_quantile(across_length, adjacency, v, 0.5, scratch);
+        off_across[static_cast<size_t>(v)] = scale > 0 && t > kRemovalScale * scale;
+      }
+    });
+    for (size_t v = 0; v < spike.size(); ++v)
+      if (off_across[v]) spike[v] = kOffAcross;
     int count = 0;
     TwoRingScratch scratch;
     for (int v = 0; v < n; ++v) {
@@ -49,7 +74,7 @@ Positions remove_spikes(const Positions& positions, const Faces& faces, const Ve
       }
       mean /= adjacency.valence(v);
       share /= adjacency.valence(v);
-      out.row(v) += (mean - h[v]) / (1 + share) * ring.normal.row(v);
+      if (spike[static_cast<size_t>(v)] == kOffAlong) out.row(v) += (mean - h[v]) / (1 + share) * ring.normal.row(v);
       // A move across the normal too (noise in random directions): the offset across cut back to
       // the two-ring's median one.
       const double usual = two_ring_height_quantile(across_length, adjacency, v, 0.5, scratch);

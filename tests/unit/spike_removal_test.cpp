@@ -34,9 +34,10 @@ TEST(SpikeRemoval, ALiftedVertexGoesBack) {
 }
 
 // A tenth of the vertices moved by half a mean edge along the normals: the moves are mostly
-// undone, the vertices it does not move are exactly the input's, and at least two thirds of those
-// it moves are ones the noise moved (the others are the surface's own tips at the edge scale: clean
-// cow has some 70 at this scale).
+// undone, the vertices it does not move are exactly the input's, and at least three fifths of those
+// it moves are ones the noise moved (the others are the surface's own tips at the edge scale, clean
+// cow has some 70 at this scale, and the triangulation's widest offsets across the normal, which
+// move only by their excess over the usual one: femur 74 of 207, 36%).
 TEST(SpikeRemoval, ImpulsiveNoiseIsUndoneAndTheRestLeftAlone) {
   for (const char* name : {"cow", "camel", "femur", "elephant"}) {
     const test::ArrayMesh m = test::load_data_mesh(name);
@@ -52,7 +53,7 @@ TEST(SpikeRemoval, ImpulsiveNoiseIsUndoneAndTheRestLeftAlone) {
     EXPECT_EQ(changed, report.moved_vertices) << name;
     EXPECT_GT(report.moved_vertices, m.vertices() / 40) << name;
     EXPECT_TRUE(report.sparse) << name;
-    EXPECT_LE(3 * changed_clean, report.moved_vertices) << name;
+    EXPECT_LE(5 * changed_clean, 2 * report.moved_vertices) << name << " " << changed_clean << " of " << report.moved_vertices;
     EXPECT_LT(mean_face_normal_error_degrees(out, m.positions, m.faces),
               0.85 * mean_face_normal_error_degrees(noisy, m.positions, m.faces))
         << name;
@@ -60,15 +61,16 @@ TEST(SpikeRemoval, ImpulsiveNoiseIsUndoneAndTheRestLeftAlone) {
 }
 
 // Moved in random directions (the authors' other impulsive model), a spike is off its ring across
-// the normal too: cutting that offset back to the usual one takes camel to under 0.6 of the noisy
-// input's E_a (the height alone: 0.75).
+// the normal too: cutting that offset back to the usual one, and finding the vertices that stand
+// off mostly across, takes camel to under 0.45 of the noisy input's E_a (0.40; fails without
+// either).
 TEST(SpikeRemoval, AMoveAcrossTheNormalIsUndoneToo) {
   const test::ArrayMesh m = test::load_data_mesh("camel");
   const Positions noisy = add_gaussian_noise(m.positions, m.faces, 50, NoiseDirection::Random, 3, 0.1);
   SpikeRemovalReport report;
   const Positions out = despike(noisy, m.faces, report);
   EXPECT_LT(mean_face_normal_error_degrees(out, m.positions, m.faces),
-            0.6 * mean_face_normal_error_degrees(noisy, m.positions, m.faces));
+            0.45 * mean_face_normal_error_degrees(noisy, m.positions, m.faces));
 }
 
 }  // namespace
