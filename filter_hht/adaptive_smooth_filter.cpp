@@ -56,7 +56,9 @@ bool apply(FilterRun& run) {
     run.log(QString("Adaptive smooth: noise given, sigma %1% of the mean edge length %2").arg(100 * options.noise).arg(edge));
   else
     run.log(QString("Adaptive smooth: noise sigma %1% of the mean edge length %2 (%3; %4 IMF samples)%5")
-                .arg(100 * report.sigma_used, 0, 'f', 1).arg(edge).arg(noise_estimate_text(report.despiked_then_smoothed ? report.input_noise : report.noise)).arg(report.noise.samples)
+                .arg(100 * report.sigma_used, 0, 'f', 1).arg(edge)
+                .arg(noise_estimate_text(report.despiked_then_filtered ? report.input_noise : report.noise))
+                .arg(report.noise.samples)
                 .arg(report.noise_free ? "; give the noise level to smooth it anyway" : ""));
   if (const QString line = spike_removal_line(report.spikes_removed, report.spike_removal, static_cast<int>(positions.rows()),
                                                 report.sigma_used);

@@ -184,7 +184,7 @@ bool apply(FilterRun& run) {
   const double edge = hht::mean_edge_length(positions, faces);
   run.log(QString("Feature-preserving denoise: noise sigma %1% of the mean edge length %2 (%3)")
               .arg(100 * report.sigma_used, 0, 'f', 1).arg(edge)
-              .arg(o.noise > 0 ? QString("given") : noise_estimate_text(report.despiked_then_denoised ? report.input_noise : report.noise)));
+              .arg(o.noise > 0 ? QString("given") : noise_estimate_text(report.despiked_then_filtered ? report.input_noise : report.noise)));
   if (report.features_detected)
     run.log(QString("  features: %1 vertices, %2 feature lines, %3 corners")
                 .arg(report.feature_vertices).arg(report.lines).arg(report.corners));

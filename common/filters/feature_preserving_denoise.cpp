@@ -202,18 +202,10 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
       step(100, "Done");
       return true;
     }
-    // Too dense for the removal alone: what it left denoised as any noise, its level read again
-    // (docs/quality.md item 26).
-    DenoiseOptions rest = options;
-    rest.remove_scattered_spikes = false;
-    DenoiseReport denoised;
-    if (!denoise_every_vertex(despiked, faces, rest, result, denoised, error, progress)) return false;
-    denoised.stages.insert(denoised.stages.begin(), report.stages.begin(), report.stages.end());
-    denoised.input_noise = report.noise;
-    denoised.spike_removal = report.spike_removal;
-    denoised.despiked_then_denoised = true;
-    report = std::move(denoised);
-    return true;
+    // Too dense for the removal alone: what it left denoised as any noise (docs/quality.md item 26).
+    return filter_despiked(despiked, options, report, [&](const Positions& p, const DenoiseOptions& o, DenoiseReport& r) {
+      return denoise_every_vertex(p, faces, o, result, r, error, progress);
+    });
   }
 
   // No noise to remove: the input as it is (the paper's stage, when asked for, still runs).

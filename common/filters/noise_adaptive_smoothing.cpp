@@ -242,27 +242,6 @@ bool finish_risks(const Positions& v, const Positions& v_normals, const Faces& f
   return recorrupted_risks(y, sigma * options.copy_noise_scale, shape, kPassDraws, kPassSeed, run, risks);
 }
 
-// Impulsive noise too dense for the spike removal alone: what it left smoothed as any noise, its
-// level read again from the despiked mesh (cow with three tenths of its vertices moved: 12.53
-// degrees against 14.58 smoothed from the input and 16.76 despiked only; docs/quality.md item 26).
-bool smooth_despiked(const Positions& positions, const Positions& despiked, const Faces& faces,
-                     const NoiseAdaptiveSmoothingOptions& options, Positions& result, NoiseAdaptiveSmoothingReport& report,
-                     std::string& error, const std::function<void(int, const char*)>& progress) {
-  NoiseAdaptiveSmoothingOptions rest = options;
-  rest.remove_scattered_spikes = false;
-  NoiseAdaptiveSmoothingReport smoothed;
-  if (!noise_adaptive_smooth(despiked, faces, rest, result, smoothed, error, progress)) return false;
-  smoothed.stages.insert(smoothed.stages.begin(), report.stages.begin(), report.stages.end());
-  smoothed.input_noise = report.noise;
-  smoothed.spike_removal = report.spike_removal;
-  smoothed.despiked_then_smoothed = true;
-  const Eigen::VectorXd moves = (result - positions).rowwise().norm();
-  smoothed.max_displacement = moves.maxCoeff();
-  smoothed.rms_displacement = std::sqrt(moves.squaredNorm() / static_cast<double>(moves.size()));
-  report = std::move(smoothed);
-  return true;
-}
-
 }  // namespace
 
 bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const NoiseAdaptiveSmoothingOptions& options,
@@ -321,7 +300,17 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
         step(100, "Done");
         return true;
       }
-      return smooth_despiked(positions, despiked, faces, options, result, report, error, progress);
+      // Too dense for the removal alone: what it left smoothed as any noise (cow with three tenths
+      // of its vertices moved: 12.41 degrees, 14.58 smoothed from the input; docs/quality.md item 26).
+      if (!filter_despiked(despiked, options, report,
+                           [&](const Positions& p, const NoiseAdaptiveSmoothingOptions& o, NoiseAdaptiveSmoothingReport& r) {
+                             return noise_adaptive_smooth(p, faces, o, result, r, error, progress);
+                           }))
+        return false;
+      const Eigen::VectorXd moves = (result - positions).rowwise().norm();
+      report.max_displacement = moves.maxCoeff();
+      report.rms_displacement = std::sqrt(moves.squaredNorm() / n);
+      return true;
     }
   }
   report.sigma_used = sigma;

@@ -169,9 +169,9 @@ struct NoiseAdaptiveSmoothingReport {
   bool taubin_slide = false;      // step 3 took Taubin's slide instead of the cap
   int untouched_vertices_kept = 0;  // impulsive noise: vertices of exactly flat hinges kept as they were
   bool spikes_removed = false;  // impulsive noise read from scattered spikes: the result is the input despiked
-  SpikeRemovalReport spike_removal;  // when spikes_removed or despiked_then_smoothed
-  bool despiked_then_smoothed = false;  // too dense for the removal alone: its result smoothed (noise: its estimate)
-  NoiseEstimate input_noise;   // when despiked_then_smoothed: the input's estimate, which read the spikes
+  SpikeRemovalReport spike_removal;  // when spikes_removed or despiked_then_filtered
+  bool despiked_then_filtered = false;  // too dense for the removal alone: its result smoothed (noise: its estimate)
+  NoiseEstimate input_noise;   // when despiked_then_filtered: the input's estimate, which read the spikes
   int finishes_scored = 0;        // finishes (step 3's two ways, with step 4b or not) scored against each other
   bool finish_risk_scored = false;  // their risks were scored (false: one finish allowed, or a copy's solve failed)
   double finish_risk_change = 0;  // the chosen finish's recorrupted risk over the plain one's (cap, no pass), minus 1

@@ -29,6 +29,8 @@
 #include "mesh/mesh_arrays.h"
 #include "mesh/vertex_adjacency.h"
 
+#include <utility>
+
 namespace hht {
 
 constexpr double kRemovalScale = 4.0;
@@ -43,5 +45,23 @@ struct SpikeRemovalReport {
 
 Positions remove_spikes(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency,
                         SpikeRemovalReport& report);
+
+// Spikes too dense for the removal alone: `run(despiked, options, report)` filters the despiked
+// mesh as any noise (its level read again; the removal off), and its report takes the place of
+// `report`, the input's estimate kept as input_noise, the removal's report and stage times before
+// its own. The smoothing and the denoiser share this (Options, Report: theirs).
+template <class Options, class Report, class Run>
+bool filter_despiked(const Positions& despiked, const Options& options, Report& report, const Run& run) {
+  Options rest = options;
+  rest.remove_scattered_spikes = false;
+  Report filtered;
+  if (!run(despiked, rest, filtered)) return false;
+  filtered.stages.insert(filtered.stages.begin(), report.stages.begin(), report.stages.end());
+  filtered.input_noise = report.noise;
+  filtered.spike_removal = report.spike_removal;
+  filtered.despiked_then_filtered = true;
+  report = std::move(filtered);
+  return true;
+}
 
 }  // namespace hht

@@ -525,7 +525,7 @@ TEST(FeaturePreservingDenoise, ScatteredSpikesAreRemovedAndTheRestLeftAlone) {
   // three tenths moved: too dense for the removal alone, the despiked mesh denoised
   const Positions dense = add_gaussian_noise(cow.positions, cow.faces, 50, NoiseDirection::Normal, 5, 0.3);
   const Positions result = denoise(dense, cow.faces, DenoiseOptions{}, &report);
-  EXPECT_TRUE(report.despiked_then_denoised);
+  EXPECT_TRUE(report.despiked_then_filtered);
   EXPECT_TRUE(report.input_noise.scattered_impulsive());
   DenoiseOptions from_input;
   from_input.remove_scattered_spikes = false;

@@ -318,7 +318,7 @@ TEST(NoiseAdaptiveSmoothing, ScatteredSpikesAreRemovedAndTheRestLeftAlone) {
   const Positions dense = add_gaussian_noise(m.positions, m.faces, 50, NoiseDirection::Normal, 5, 0.3);
   const Positions despiked_smoothed = smooth(dense, m.faces, {}, &report);
   EXPECT_FALSE(report.spikes_removed);
-  EXPECT_TRUE(report.despiked_then_smoothed);
+  EXPECT_TRUE(report.despiked_then_filtered);
   EXPECT_FALSE(report.spike_removal.sparse);
   EXPECT_TRUE(report.input_noise.scattered_impulsive());
   NoiseAdaptiveSmoothingOptions from_input;
