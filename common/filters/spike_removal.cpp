@@ -20,6 +20,10 @@ Positions remove_spikes(const Positions& positions, const Faces& faces, const Ve
   Positions out = positions;
   std::vector<unsigned char> moved(static_cast<size_t>(n), 0), spike(static_cast<size_t>(n), 0),
       off_across(static_cast<size_t>(n), 0);
+  // A vertex's test reads the positions within three rings of it: after the first round only the
+  // vertices that near a move can change their answer (the others are skipped, the same result).
+  std::vector<unsigned char> active(static_cast<size_t>(n), 1);
+  std::vector<int> front, next;
   for (int round = 0; round < kRemovalRounds; ++round) {
     const RingHeights ring = ring_heights(out, faces, adjacency);
     const Eigen::VectorXd& h = ring.height;
@@ -31,7 +35,7 @@ Positions remove_spikes(const Positions& positions, const Faces& faces, const Ve
       TwoRingScratch scratch;
       for (int v = first; v < last; ++v) {
         spike[static_cast<size_t>(v)] = 0;
-        if (adjacency.valence(v) < 3 || adjacency.boundary[static_cast<size_t>(v)]) continue;
+        if (!active[static_cast<size_t>(v)] || adjacency.valence(v) < 3 || adjacency.boundary[static_cast<size_t>(v)]) continue;
         const double a = std::abs(h[v]);
         bool highest = a > kSpikeStandOff * mean_ring_edge(out, adjacency, v);
         for (const int* j = adjacency.begin(v); j != adjacency.end(v) && highest; ++j) highest = a >= std::abs(h[*j]);
@@ -49,7 +53,7 @@ Positions remove_spikes(const Positions& positions, const Faces& faces, const Ve
       TwoRingScratch scratch;
       for (int v = first; v < last; ++v) {
         off_across[static_cast<size_t>(v)] = 0;
-        if (spike[static_cast<size_t>(v)] || adjacency.valence(v) < 3 || adjacency.boundary[static_cast<size_t>(v)]) continue;
+        if (!active[static_cast<size_t>(v)] || spike[static_cast<size_t>(v)] || adjacency.valence(v) < 3 || adjacency.boundary[static_cast<size_t>(v)]) continue;
         const double t = across_length[v];
         bool widest = t > kSpikeStandOff * mean_ring_edge(out, adjacency, v);
         for (const int* j = adjacency.begin(v); j != adjacency.end(v) && widest; ++j)
@@ -63,8 +67,10 @@ Positions remove_spikes(const Positions& positions, const Faces& faces, const Ve
       if (off_across[v]) spike[v] = kOffAcross;
     int count = 0;
     TwoRingScratch scratch;
+    front.clear();
     for (int v = 0; v < n; ++v) {
       if (!spike[static_cast<size_t>(v)]) continue;
+      front.push_back(v);
       // Each neighbour's height holds 1 / its valence of v's move, against it: the move that
       // leaves v at its neighbours' mean height after the move.
       double mean = 0, share = 0;
@@ -85,6 +91,18 @@ Positions remove_spikes(const Positions& positions, const Faces& faces, const Ve
     }
     if (count == 0) break;
     ++report.rounds;
+    std::fill(active.begin(), active.end(), 0);
+    for (int v : front) active[static_cast<size_t>(v)] = 1;
+    for (int ring_step = 0; ring_step < 3; ++ring_step) {
+      next.clear();
+      for (int v : front)
+        for (const int* j = adjacency.begin(v); j != adjacency.end(v); ++j)
+          if (!active[static_cast<size_t>(*j)]) {
+            active[static_cast<size_t>(*j)] = 1;
+            next.push_back(*j);
+          }
+      front.swap(next);
+    }
   }
   report.sparse = report.moved_vertices <= kSparseSpikes * n;
   return out;
