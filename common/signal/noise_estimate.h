@@ -32,7 +32,10 @@
 // part the noise missed. The MAD of a mixture of moved and unmoved vertices reads it low
 // (blade with a tenth of its vertices moved: 0.05 mean edges for 0.15), so sigma is then the
 // larger of the IMF's estimate and sqrt(spike share) times the spikes' RMS one-ring height, the
-// noise's RMS over the vertices amid flat hinges.
+// noise's RMS over the vertices amid flat hinges. On a surface without exactly flat parts the
+// estimate also reads scattered spikes (mesh/scattered_spikes.h); where they read impulsive
+// noise, sigma is left as above (only the log shows it) and the filters remove the spikes instead
+// of smoothing by it (filters/spike_removal.h; docs/quality.md item 26).
 #pragma once
 
 #include "signal/emd.h"
