@@ -24,6 +24,7 @@
 #include "mesh/sharp_features.h"
 #include "mesh/crease_contrast.h"
 #include "mesh/hinge_heights.h"
+#include "filters/spike_removal.h"
 
 #include <Eigen/SparseCholesky>
 
@@ -1836,6 +1837,15 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "RS") {  // the spike removal alone, read as impulsive or not: its moves and its reading across
+    SpikeRemovalReport removal;
+    const Positions despiked = remove_spikes(noisy, f, vertex_adjacency(f, n), removal);
+    char label[96];
+    std::snprintf(label, sizeof label, "despiked (moved %d, %.4f)", removal.moved_vertices, double(removal.moved_vertices) / n);
+    std::printf("  across ratio %.2f (across %d)\n", removal.across_ratio, int(removal.across));
+    show(label, despiked);
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "SP") {  // spikes off exactly flat hinges (impulsive noise) and the noise estimate
     std::string err;
     HamiltonianCycle cycle;
@@ -1866,6 +1876,28 @@ int main(int argc, char** argv) {
                   "scattered after %d (%.4f); truth left %.4f\n", removal.moved_vertices, double(removal.moved_vertices) / n,
                   removal.rounds, again.relative(), ne.relative(), again.imf_sigma / h, again.scattered.spikes,
                   again.scattered.share(), noise_along_normals(clean, despiked, f));
+    if (std::getenv("LAB_DENSEGIVEN")) {  // experiment: the despiked mesh filtered at given levels
+      show("despiked", despiked);
+      std::printf("  despiked rms reading %.4f (mad %.4f); input rms reading %.4f\n", again.imf_rms_sigma / again.mean_edge, again.imf_sigma / again.mean_edge, ne.imf_rms_sigma / ne.mean_edge);
+      for (double given : {again.relative(), again.imf_rms_sigma / again.mean_edge, 0.1, ne.relative()}) {
+        DenoiseOptions d;
+        d.remove_scattered_spikes = false;
+        d.noise = given;
+        Positions out;
+        DenoiseReport rep;
+        feature_preserving_denoise(despiked, f, d, out, rep, err);
+        char label[64];
+        std::snprintf(label, sizeof label, "denoise given %.3f", given);
+        show(label, out);
+        NoiseAdaptiveSmoothingOptions o = lab_options();
+        o.remove_scattered_spikes = false;
+        o.noise = given;
+        NoiseAdaptiveSmoothingReport r;
+        noise_adaptive_smooth(despiked, f, o, out, r, err);
+        std::snprintf(label, sizeof label, "smooth given %.3f", given);
+        show(label, out);
+      }
+    }
     }
     return 0;
   }

@@ -128,13 +128,18 @@ QString untouched_vertices_line(int kept) {
 
 QString spike_removal_line(bool removed, const hht::SpikeRemovalReport& r, int vertices, double despiked_sigma) {
   if (r.moved_vertices == 0) return QString();
+  const QString direction = r.across ? QString("moved across the surface too: offsets along it cut back")
+                                     : QString("moved along the normals (offset across over usual %1): offsets along "
+                                               "the surface kept").arg(r.across_ratio, 0, 'f', 2);
   if (removed)
-    return QString("  impulsive noise: %1 spikes put back onto their neighbours' surface in %2 rounds; every other vertex "
-                   "left exactly as it was")
-        .arg(r.moved_vertices).arg(r.rounds);
-  return QString("  impulsive noise too dense for the spike removal alone (it moved %1 of %2 vertices, over %3%): the "
-                 "despiked mesh filtered as any noise, its sigma read again at %4% of the mean edge")
-      .arg(r.moved_vertices).arg(vertices).arg(100 * hht::kSparseSpikes, 0, 'f', 0).arg(100 * despiked_sigma, 0, 'f', 1);
+    return QString("  impulsive noise: %1 spikes put back onto their neighbours' surface in %2 rounds (%3); every other "
+                   "vertex left exactly as it was")
+        .arg(r.moved_vertices).arg(r.rounds).arg(direction);
+  return QString("  impulsive noise too dense for the spike removal alone (it moved %1 of %2 vertices, over %3%; %4): "
+                 "the despiked mesh filtered as any noise, at the level of what it left: sigma %5% of the mean edge, read "
+                 "from the finest IMF's RMS, as that noise sits on a share of the vertices")
+      .arg(r.moved_vertices).arg(vertices).arg(100 * hht::kSparseSpikes, 0, 'f', 0).arg(direction)
+      .arg(100 * despiked_sigma, 0, 'f', 1);
 }
 
 QStringList imf_summary_lines(const std::vector<hht::ImfSummary>& imfs) {

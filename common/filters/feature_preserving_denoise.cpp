@@ -202,10 +202,12 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
       step(100, "Done");
       return true;
     }
-    // Too dense for the removal alone: what it left denoised as any noise (docs/quality.md item 26).
-    return filter_despiked(despiked, options, report, [&](const Positions& p, const DenoiseOptions& o, DenoiseReport& r) {
-      return denoise_every_vertex(p, faces, o, result, r, error, progress);
-    });
+    // Too dense for the removal alone: what it left denoised as any noise (docs/quality.md items 26
+    // and 27).
+    return filter_despiked(despiked, faces, report.cycle, options, report, error,
+                           [&](const Positions& p, const DenoiseOptions& o, DenoiseReport& r) {
+                             return denoise_every_vertex(p, faces, o, result, r, error, progress);
+                           });
   }
 
   // No noise to remove: the input as it is (the paper's stage, when asked for, still runs).

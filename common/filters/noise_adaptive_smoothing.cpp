@@ -300,9 +300,10 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
         step(100, "Done");
         return true;
       }
-      // Too dense for the removal alone: what it left smoothed as any noise (cow with three tenths
-      // of its vertices moved: 12.41 degrees, 14.58 smoothed from the input; docs/quality.md item 26).
-      if (!filter_despiked(despiked, options, report,
+      // Too dense for the removal alone: what it left smoothed as any noise (camel with three
+      // tenths of its vertices moved: 5.77 degrees, 9.32 smoothed from the input; docs/quality.md
+      // items 26 and 27).
+      if (!filter_despiked(despiked, faces, cycle, options, report, error,
                            [&](const Positions& p, const NoiseAdaptiveSmoothingOptions& o, NoiseAdaptiveSmoothingReport& r) {
                              return noise_adaptive_smooth(p, faces, o, result, r, error, progress);
                            }))

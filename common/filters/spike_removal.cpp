@@ -11,6 +11,26 @@ namespace hht {
 
 namespace {
 constexpr unsigned char kOffAlong = 1, kOffAcross = 2;  // how a spike stands off its ring
+
+// Whether the first round's height spikes stand off across the normal too: the median over them
+// of their offset across over their two-ring's median one, against kAcrossRatio. Too few spikes
+// to tell: across, as a move in any direction needs.
+bool moves_across(const std::vector<unsigned char>& spike, const Eigen::VectorXd& across_length,
+                  const VertexAdjacency& adjacency, double& median_ratio) {
+  std::vector<double> ratios;
+  TwoRingScratch scratch;
+  for (int v = 0; v < adjacency.vertices(); ++v) {
+    if (spike[static_cast<size_t>(v)] != kOffAlong) continue;
+    const double usual = two_ring_height_quantile(across_length, adjacency, v, 0.5, scratch);
+    if (usual > 0) ratios.push_back(across_length[v] / usual);
+  }
+  median_ratio = 0;
+  if (static_cast<int>(ratios.size()) < kMinScatteredSpikes) return true;
+  const auto mid = ratios.begin() + static_cast<std::ptrdiff_t>(ratios.size() / 2);
+  std::nth_element(ratios.begin(), mid, ratios.end());
+  median_ratio = *mid;
+  return median_ratio > kAcrossRatio;
+}
 }  // namespace
 
 Positions remove_spikes(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency,
@@ -46,10 +66,11 @@ Positions remove_spikes(const Positions& positions, const Faces& faces, const Ve
         }
       }
     });
+    if (round == 0) report.across = moves_across(spike, across_length, adjacency, report.across_ratio);
     // Or across the normal: moved in a random direction, a vertex may stand off its ring's
     // centroid mostly along the surface; the same test on its offset across the normal, for the
     // vertices no spike found above touches (a spike shifts its neighbours' centroids).
-    parallel_for(0, n, [&](int first, int last) {
+    if (report.across) parallel_for(0, n, [&](int first, int last) {
       TwoRingScratch scratch;
       for (int v = first; v < last; ++v) {
         off_across[static_cast<size_t>(v)] = 0;
@@ -106,6 +127,12 @@ Positions remove_spikes(const Positions& positions, const Faces& faces, const Ve
   }
   report.sparse = report.moved_vertices <= kSparseSpikes * n;
   return out;
+}
+
+double despiked_noise(const NoiseEstimate& despiked, const NoiseEstimate& input) {
+  if (!(despiked.mean_edge > 0)) return input.relative();
+  return std::clamp(despiked.imf_rms_sigma / despiked.mean_edge, despiked.relative(),
+                    std::max(despiked.relative(), input.relative()));
 }
 
 }  // namespace hht

@@ -82,6 +82,9 @@ bool estimate_noise(const Positions& positions, const Faces& faces, const Hamilt
   out.samples = static_cast<int>(finest.size());
   if (finest.empty()) return true;  // too small or too flat a signal: no noise measurable
   const double centre = median(finest);
+  double squares = 0;
+  for (double x : finest) squares += (x - centre) * (x - centre);
+  out.imf_rms_sigma = std::sqrt(squares / static_cast<double>(finest.size())) / std::sqrt(1.0 + inverse_valence / interior) / kImf1Share;
   for (double& x : finest) x = std::abs(x - centre);
   const double spread = median(finest) / 0.6745;
   out.imf_sigma = out.sigma = spread / std::sqrt(1.0 + inverse_valence / interior) / kImf1Share;
@@ -93,7 +96,7 @@ bool estimate_noise(const Positions& positions, const Faces& faces, const Hamilt
   std::nth_element(hinges.begin(), at, hinges.end());
   out.hinge_sigma = *at / folded_normal_quantile(kHingeQuantile);
   out.spikes = flat_hinge_spikes(positions, faces, adjacency);
-  double squares = 0;
+  squares = 0;
   for (size_t v = 0; v < out.spikes.role.size(); ++v)
     if (out.spikes.role[v] == kSpike) squares += h(static_cast<Eigen::Index>(v)) * h(static_cast<Eigen::Index>(v));
   out.spikes.role.clear();

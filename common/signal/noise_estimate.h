@@ -55,6 +55,7 @@ struct NoiseEstimate {
   double relative() const { return mean_edge > 0 ? sigma / mean_edge : 0; }  // sigma / mean edge
   int samples = 0;           // IMF 1 samples the MAD was taken over
   double imf_sigma = 0;      // the finest IMF's estimate, before the cap
+  double imf_rms_sigma = 0;  // the same from the IMF's RMS instead of its MAD
   double hinge_sigma = 0;    // the flat hinges' estimate (0 on a mesh with fewer than kMinHinges)
   FlatHingeSpikes spikes;    // vertices standing off flat surroundings (role left empty)
   double spike_sigma = 0;    // the spikes' RMS one-ring height (length unit)
