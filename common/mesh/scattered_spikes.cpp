@@ -7,35 +7,50 @@
 
 namespace hht {
 
-RingHeights ring_heights(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency) {
+void update_ring_height(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency,
+                        const IndexLists& around, int v, RingHeights& ring) {
+  Eigen::RowVector3d c = positions.row(v);
+  if (adjacency.valence(v) > 0) {
+    c.setZero();
+    for (const int* j = adjacency.begin(v); j != adjacency.end(v); ++j) c += positions.row(*j);
+    c /= adjacency.valence(v);
+  }
+  ring.centroid.row(v) = c;
+  // The fan's area vectors with v at c, face by face and corner by corner in face order (a face
+  // listed twice holds v at two corners).
+  Eigen::RowVector3d normal = Eigen::RowVector3d::Zero();
+  for (int e = around.begin(v); e < around.end(v); ++e) {
+    const int f = around.items[static_cast<size_t>(e)];
+    if (e > around.begin(v) && around.items[static_cast<size_t>(e - 1)] == f) continue;
+    for (int k = 0; k < 3; ++k)
+      if (faces(f, k) == v)
+        normal += (positions.row(faces(f, (k + 1) % 3)) - c).cross(positions.row(faces(f, (k + 2) % 3)) - c);
+  }
+  const double length = normal.norm();
+  if (!(length > 0) || adjacency.valence(v) == 0) {
+    ring.normal.row(v).setZero();
+    ring.height[v] = 0;
+    return;
+  }
+  ring.normal.row(v) = normal / length;
+  ring.height[v] = (positions.row(v) - c).dot(ring.normal.row(v));
+}
+
+RingHeights ring_heights(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency,
+                         const IndexLists& around) {
   const int n = adjacency.vertices();
   RingHeights out;
-  Positions& centroid = out.centroid;
-  centroid = positions;
-  for (int i = 0; i < n; ++i) {
-    if (adjacency.valence(i) == 0) continue;
-    centroid.row(i).setZero();
-    for (const int* j = adjacency.begin(i); j != adjacency.end(i); ++j) centroid.row(i) += positions.row(*j);
-    centroid.row(i) /= adjacency.valence(i);
-  }
-  out.normal = Positions::Zero(n, 3);
-  for (Eigen::Index f = 0; f < faces.rows(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const int i = faces(f, k), a = faces(f, (k + 1) % 3), b = faces(f, (k + 2) % 3);
-      const Eigen::RowVector3d c = centroid.row(i);
-      out.normal.row(i) += (positions.row(a) - c).cross(positions.row(b) - c);
-    }
-  out.height = Eigen::VectorXd::Zero(n);
-  for (int i = 0; i < n; ++i) {
-    const double length = out.normal.row(i).norm();
-    if (!(length > 0) || adjacency.valence(i) == 0) {
-      out.normal.row(i).setZero();
-      continue;
-    }
-    out.normal.row(i) /= length;
-    out.height[i] = (positions.row(i) - centroid.row(i)).dot(out.normal.row(i));
-  }
+  out.centroid.resize(n, 3);
+  out.normal.resize(n, 3);
+  out.height.resize(n);
+  parallel_for(0, n, [&](int first, int last) {
+    for (int v = first; v < last; ++v) update_ring_height(positions, faces, adjacency, around, v, out);
+  });
   return out;
+}
+
+RingHeights ring_heights(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency) {
+  return ring_heights(positions, faces, adjacency, vertex_faces(faces, adjacency.vertices()));
 }
 
 double two_ring_height_quantile(const Eigen::VectorXd& height, const VertexAdjacency& adjacency, int v, double q,

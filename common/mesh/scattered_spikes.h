@@ -13,6 +13,7 @@
 // few (a horn's tip), not a share. Ours, not the paper's.
 #pragma once
 
+#include "mesh/face_rings.h"
 #include "mesh/mesh_arrays.h"
 #include "mesh/vertex_adjacency.h"
 
@@ -29,6 +30,12 @@ struct RingHeights {
   Positions centroid;      // c_i (the vertex itself where it has no neighbour)
 };
 RingHeights ring_heights(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency);
+// The same with the faces around each vertex given (mesh/face_rings.h's vertex_faces), and one
+// vertex's entry recomputed in `ring` after its one-ring moved: the same sums in the same order.
+RingHeights ring_heights(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency,
+                         const IndexLists& around);
+void update_ring_height(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency,
+                        const IndexLists& around, int v, RingHeights& ring);
 
 // The quantile q of |height| over the two-ring of `v`, `v` left out: the local scale a spike is
 // measured in.

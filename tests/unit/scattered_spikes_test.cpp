@@ -25,6 +25,27 @@ TEST(ScatteredSpikes, RingHeightOfALiftedVertex) {
     EXPECT_NEAR(std::abs(ring.height[*j]), 0.1, 0.02) << *j;
 }
 
+// Moving a few vertices changes the ring heights of those vertices and their neighbours only:
+// recomputing just these gives exactly a full recount (the spike removal's rounds rely on it).
+TEST(ScatteredSpikes, RingHeightsUpdatedAroundMovesEqualAFullRecount) {
+  const test::ArrayMesh m = test::load_data_mesh("cow");
+  const VertexAdjacency adjacency = vertex_adjacency(m.faces, m.vertices());
+  const IndexLists around = vertex_faces(m.faces, m.vertices());
+  RingHeights ring = ring_heights(m.positions, m.faces, adjacency, around);
+  Positions moved = m.positions;
+  std::vector<int> touched;
+  for (int v = 0; v < m.vertices(); v += 97) {
+    moved.row(v) += Eigen::RowVector3d(0.01, -0.02, 0.015);
+    touched.push_back(v);
+    touched.insert(touched.end(), adjacency.begin(v), adjacency.end(v));
+  }
+  for (int v : touched) update_ring_height(moved, m.faces, adjacency, around, v, ring);
+  const RingHeights full = ring_heights(moved, m.faces, adjacency);
+  EXPECT_EQ(ring.height, full.height);
+  EXPECT_EQ(ring.normal, full.normal);
+  EXPECT_EQ(ring.centroid, full.centroid);
+}
+
 // Clean meshes, organic and CAD, have a few tips at most, not a share (a cube's corners stand off
 // exactly flat faces: flat_hinge_spikes.h reads those).
 TEST(ScatteredSpikes, CleanMeshesAreNotImpulsive) {
