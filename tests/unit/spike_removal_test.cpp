@@ -16,6 +16,21 @@ Positions despike(const Positions& p, const Faces& f, SpikeRemovalReport& report
   return remove_spikes(p, f, vertex_adjacency(f, static_cast<int>(p.rows())), report);
 }
 
+// A data mesh with a share of its vertices moved by half a mean edge (seed 3), and the removal's
+// result on it.
+struct Despiked {
+  test::ArrayMesh mesh;
+  Positions noisy, out;
+  SpikeRemovalReport report;
+};
+Despiked despike_impulsive(const char* name, NoiseDirection direction, double share) {
+  Despiked d;
+  d.mesh = test::load_data_mesh(name);
+  d.noisy = add_gaussian_noise(d.mesh.positions, d.mesh.faces, 50, direction, 3, share);
+  d.out = despike(d.noisy, d.mesh.faces, d.report);
+  return d;
+}
+
 // A vertex lifted off a flat grid goes back onto the plane of its ring; nothing else moves.
 TEST(SpikeRemoval, ALiftedVertexGoesBack) {
   const test::ArrayMesh g = test::grid(9, 9);
@@ -43,10 +58,10 @@ TEST(SpikeRemoval, ALiftedVertexGoesBack) {
 // move only by their excess over the usual one: femur 74 of 207, 36%).
 TEST(SpikeRemoval, ImpulsiveNoiseIsUndoneAndTheRestLeftAlone) {
   for (const char* name : {"cow", "camel", "femur", "elephant"}) {
-    const test::ArrayMesh m = test::load_data_mesh(name);
-    const Positions noisy = add_gaussian_noise(m.positions, m.faces, 50, NoiseDirection::Normal, 3, 0.1);
-    SpikeRemovalReport report;
-    const Positions out = despike(noisy, m.faces, report);
+    const Despiked d = despike_impulsive(name, NoiseDirection::Normal, 0.1);
+    const test::ArrayMesh& m = d.mesh;
+    const Positions &noisy = d.noisy, &out = d.out;
+    const SpikeRemovalReport& report = d.report;
     int changed = 0, changed_clean = 0;
     for (Eigen::Index v = 0; v < out.rows(); ++v) {
       if (out.row(v) == noisy.row(v)) continue;
@@ -72,13 +87,10 @@ double rms_distance(const Positions& a, const Positions& b) { return std::sqrt((
 // against 11.2 in the lab).
 TEST(SpikeRemoval, MovesAlongTheNormalsAreNotTakenForMovesAcross) {
   for (const char* name : {"bull", "cow", "femur", "elephant"}) {
-    const test::ArrayMesh m = test::load_data_mesh(name);
-    const Positions noisy = add_gaussian_noise(m.positions, m.faces, 50, NoiseDirection::Normal, 3, 0.05);
-    SpikeRemovalReport report;
-    const Positions out = despike(noisy, m.faces, report);
-    EXPECT_FALSE(report.across) << name << " " << report.across_ratio;
-    EXPECT_GT(report.across_ratio, 0) << name;
-    EXPECT_LT(rms_distance(out, m.positions), rms_distance(noisy, m.positions)) << name;
+    const Despiked d = despike_impulsive(name, NoiseDirection::Normal, 0.05);
+    EXPECT_FALSE(d.report.across) << name << " " << d.report.across_ratio;
+    EXPECT_GT(d.report.across_ratio, 0) << name;
+    EXPECT_LT(rms_distance(d.out, d.mesh.positions), rms_distance(d.noisy, d.mesh.positions)) << name;
   }
 }
 
@@ -87,13 +99,10 @@ TEST(SpikeRemoval, MovesAlongTheNormalsAreNotTakenForMovesAcross) {
 // off mostly across, takes camel to under 0.45 of the noisy input's E_a (0.40; fails without
 // either).
 TEST(SpikeRemoval, AMoveAcrossTheNormalIsUndoneToo) {
-  const test::ArrayMesh m = test::load_data_mesh("camel");
-  const Positions noisy = add_gaussian_noise(m.positions, m.faces, 50, NoiseDirection::Random, 3, 0.1);
-  SpikeRemovalReport report;
-  const Positions out = despike(noisy, m.faces, report);
-  EXPECT_TRUE(report.across) << report.across_ratio;
-  EXPECT_LT(mean_face_normal_error_degrees(out, m.positions, m.faces),
-            0.45 * mean_face_normal_error_degrees(noisy, m.positions, m.faces));
+  const Despiked d = despike_impulsive("camel", NoiseDirection::Random, 0.1);
+  EXPECT_TRUE(d.report.across) << d.report.across_ratio;
+  EXPECT_LT(mean_face_normal_error_degrees(d.out, d.mesh.positions, d.mesh.faces),
+            0.45 * mean_face_normal_error_degrees(d.noisy, d.mesh.positions, d.mesh.faces));
 }
 
 NoiseEstimate estimate(const Positions& p, const Faces& f) {
@@ -111,13 +120,10 @@ NoiseEstimate estimate(const Positions& p, const Faces& f) {
 // estimate.
 TEST(SpikeRemoval, TheNoiseLeftIsReadFromWhereItSits) {
   for (const char* name : {"camel", "elephant"}) {
-    const test::ArrayMesh m = test::load_data_mesh(name);
-    const Positions noisy = add_gaussian_noise(m.positions, m.faces, 50, NoiseDirection::Normal, 3, 0.3);
-    SpikeRemovalReport report;
-    const Positions out = despike(noisy, m.faces, report);
-    ASSERT_FALSE(report.sparse) << name;
-    const NoiseEstimate input = estimate(noisy, m.faces), left = estimate(out, m.faces);
-    const double truth = noise_along_normals(m.positions, out, m.faces), read = despiked_noise(left, input);
+    const Despiked d = despike_impulsive(name, NoiseDirection::Normal, 0.3);
+    ASSERT_FALSE(d.report.sparse) << name;
+    const NoiseEstimate input = estimate(d.noisy, d.mesh.faces), left = estimate(d.out, d.mesh.faces);
+    const double truth = noise_along_normals(d.mesh.positions, d.out, d.mesh.faces), read = despiked_noise(left, input);
     EXPECT_GT(read, 0.7 * truth) << name << " " << read << " " << left.relative() << " " << truth;
     EXPECT_LT(read, 1.2 * truth) << name << " " << read << " " << truth;
     EXPECT_LE(read, input.relative()) << name;
