@@ -434,6 +434,10 @@ int main(int argc, char** argv) {
     for (int i = 0; i < n; ++i)
       for (int k = 0; k < 3; ++k) noisy(i, k) += g(rng);
   }
+  if (const char* share = std::getenv("LAB_OUTLIERS")) {  // mixed noise: a share of the vertices moved by half a mean edge more, along the normals
+    noisy = add_gaussian_noise(noisy, f, 50, NoiseDirection::Normal, 1000 + (std::getenv("LAB_SEED") ? std::atoi(std::getenv("LAB_SEED")) : 11),
+                               std::atof(share));
+  }
   if (std::getenv("LAB_GIVENLOG")) {  // the noise given as HHT: Add Gaussian Noise logs it: along the normals, in the noisy mesh's edge
     const std::string given = std::to_string(noise_along_normals(clean, noisy, f));
     setenv("LAB_GIVEN", given.c_str(), 1);

@@ -133,7 +133,8 @@ QString spike_removal_line(bool removed, const hht::SpikeRemovalReport& r, int v
                                                "the surface kept").arg(r.across_ratio, 0, 'f', 2);
   if (removed)
     return QString("  impulsive noise: %1 spikes put back onto their neighbours' surface in %2 rounds (%3); every other "
-                   "vertex left exactly as it was")
+                   "vertex left exactly as it was (if the whole surface is noisy too, apply the filter again: without "
+                   "the spikes it reads that noise and filters it)")
         .arg(r.moved_vertices).arg(r.rounds).arg(direction);
   return QString("  impulsive noise too dense for the spike removal alone (it moved %1 of %2 vertices, over %3%; %4): "
                  "the despiked mesh filtered as any noise, at the level of what it left: sigma %5% of the mean edge, read "
