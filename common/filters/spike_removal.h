@@ -41,6 +41,7 @@
 #include "mesh/mesh_arrays.h"
 #include "mesh/vertex_adjacency.h"
 #include "signal/noise_estimate.h"
+#include "util/stage_clock.h"
 
 #include <string>
 #include <utility>
@@ -79,8 +80,10 @@ double despiked_noise(const NoiseEstimate& despiked, const NoiseEstimate& input)
 template <class Options, class Report, class Run>
 bool filter_despiked(const Positions& despiked, const Faces& faces, const HamiltonianCycle& cycle, const Options& options,
                      Report& report, std::string& error, const Run& run) {
+  StageClock clock(report.stages);
   NoiseEstimate left;
   if (!estimate_noise(despiked, faces, cycle, options.emd, left, error)) return false;
+  clock.done("noise left by the removal");
   Options rest = options;
   rest.remove_scattered_spikes = false;
   rest.noise = despiked_noise(left, report.noise);
