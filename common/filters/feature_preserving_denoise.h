@@ -180,7 +180,8 @@ struct DenoiseReport {
   int untouched_vertices_kept = 0;  // impulsive noise: vertices of exactly flat hinges kept as they were (keep_untouched_vertices.h)
   bool spikes_removed = false;  // impulsive noise read from scattered spikes: the result is the input despiked
   SpikeRemovalReport spike_removal;  // when spikes_removed or despiked_then_filtered (filters/spike_removal.h)
-  bool despiked_then_filtered = false;  // too dense for the removal alone: its result denoised (noise: its estimate)
+  bool despiked_then_filtered = false;  // too dense for the removal alone: its result denoised at
+                                        // despiked_noise's level (noise: the despiked mesh's estimate)
   NoiseEstimate input_noise;   // when despiked_then_filtered: the input's estimate, which read the spikes
   bool features_detected = false;  // report.type and feature_lines hold the input's features
   int feature_vertices = 0;

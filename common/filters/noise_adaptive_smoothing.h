@@ -170,7 +170,8 @@ struct NoiseAdaptiveSmoothingReport {
   int untouched_vertices_kept = 0;  // impulsive noise: vertices of exactly flat hinges kept as they were
   bool spikes_removed = false;  // impulsive noise read from scattered spikes: the result is the input despiked
   SpikeRemovalReport spike_removal;  // when spikes_removed or despiked_then_filtered
-  bool despiked_then_filtered = false;  // too dense for the removal alone: its result smoothed (noise: its estimate)
+  bool despiked_then_filtered = false;  // too dense for the removal alone: its result smoothed at
+                                        // despiked_noise's level (noise: the despiked mesh's estimate)
   NoiseEstimate input_noise;   // when despiked_then_filtered: the input's estimate, which read the spikes
   int finishes_scored = 0;        // finishes (step 3's two ways, with step 4b or not) scored against each other
   bool finish_risk_scored = false;  // their risks were scored (false: one finish allowed, or a copy's solve failed)
