@@ -70,14 +70,12 @@ bool apply(FilterRun& run) {
   }
   if (report.cutoff_by_risk)
     run.log(QString("  cut-off by Stein's unbiased risk with the given noise, on %1 vertices (%2 conjugate gradient "
-                    "iterations)%3")
-                .arg(report.selection_vertices).arg(report.selection_iterations)
-                .arg(report.cutoff_unreachable ? "; its choice was beyond the solver's reach: the noise level's cut-off used" : ""));
+                    "iterations)")
+                .arg(report.selection_vertices).arg(report.selection_iterations));
   else if (report.selection_vertices > 0)
     run.log(QString("  cut-off by cross-validation on %1 vertices (%2 conjugate gradient iterations): %3")
                 .arg(report.selection_vertices).arg(report.selection_iterations)
-                .arg(report.cutoff_unreachable ? "its choice was beyond the solver's reach: the noise level's cut-off used"
-                     : report.cutoff_selected ? "stronger than the noise level's" : "the noise level's kept"));
+                .arg(report.cutoff_selected ? "stronger than the noise level's" : "the noise level's kept"));
   run.log(QString("  cut-off mu %1 (strength %2), %3 conjugate gradient iterations; RMS vertex move %4, largest %5 "
                   "(x mean edge)")
               .arg(report.mu, 0, 'f', 3).arg(options.strength).arg(report.iterations)

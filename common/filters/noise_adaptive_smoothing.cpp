@@ -363,14 +363,7 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
     return biharmonic_low_pass(adjacency, v, mu, options.first_order, kSmoothingMaxError * diagonal / edge, x, solve,
                                [&](double done) { step(30 + static_cast<int>(60 * done), "Least-squares smoothing (conjugate gradients)"); });
   };
-  bool converged = solve_at(report.mu);
-  if (!converged && (report.cutoff_by_risk || report.cutoff_selected)) {
-    // A chosen cut-off beyond the solver's reach (Stein's risk with a noise level given far too
-    // high): the noise level's own, which the filter took before the choice existed.
-    report.mu = noise_cutoff / std::sqrt(options.strength);
-    report.cutoff_unreachable = true;
-    converged = solve_at(report.mu);
-  }
+  const bool converged = solve_at(report.mu);
   report.iterations = solve.iterations;
   report.error_bound = solve.error_bound * edge / diagonal;
   if (!converged) {

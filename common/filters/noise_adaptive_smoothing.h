@@ -155,7 +155,6 @@ struct NoiseAdaptiveSmoothingReport {
   double mu = 0;
   bool cutoff_selected = false;  // mu from cross-validation (stronger than the noise level's)
   bool cutoff_by_risk = false;   // mu from Stein's unbiased risk with the given noise
-  bool cutoff_unreachable = false;  // the chosen mu's solve did not converge: the noise level's was used
   int selection_iterations = 0;  // conjugate gradient iterations of the selection's solves
   int selection_vertices = 0;    // vertices it scored on (a sample of a large mesh)
   double max_displacement = 0;

@@ -3,8 +3,11 @@
 #include "mesh/uniform_laplacian.h"
 #include "util/parallel_for.h"
 
+#include <Eigen/QR>
+
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace hht {
 
@@ -45,6 +48,51 @@ VertexAdjacency breadth_first_renumbered(const VertexAdjacency& adjacency, std::
   return out;
 }
 
+// The preconditioner's polynomial: Chebyshev coefficients (in s - 1) of the q of least degree
+// (at most kMaxDegree) with |1 - q(s) p(s)| <= kPolynomialFit on [0, 2], p(s) = s^4 + g mu^2 s^2 +
+// mu^4, fitted by least squares at Chebyshev nodes (which crowd near s = 0, where p is small).
+constexpr int kMaxDegree = 64;
+constexpr double kPolynomialFit = 0.35;
+
+double chebyshev_series(const Eigen::VectorXd& c, double x) {
+  double b1 = 0, b2 = 0;
+  for (Eigen::Index k = c.size() - 1; k >= 1; --k) {
+    const double b = c[k] + 2 * x * b1 - b2;
+    b2 = b1;
+    b1 = b;
+  }
+  return c[0] + x * b1 - b2;
+}
+
+Eigen::VectorXd inverse_polynomial(double mu, double first_order) {
+  const auto p = [&](double s) { return s * s * s * s + first_order * mu * mu * s * s + std::pow(mu, 4); };
+  constexpr int kNodes = 2000, kChecks = 8000;
+  Eigen::VectorXd c;
+  for (int degree = 2; degree <= kMaxDegree; degree += degree < 16 ? 1 : 4) {
+    Eigen::MatrixXd basis(kNodes, degree + 1);
+    for (int i = 0; i < kNodes; ++i) {
+      const double x = std::cos(M_PI * (i + 0.5) / kNodes), px = p(1 + x);
+      double previous = 1, current = x;
+      basis(i, 0) = px;
+      if (degree >= 1) basis(i, 1) = x * px;
+      for (int k = 2; k <= degree; ++k) {
+        const double next = 2 * x * current - previous;
+        previous = current;
+        current = next;
+        basis(i, k) = next * px;
+      }
+    }
+    c = basis.colPivHouseholderQr().solve(Eigen::VectorXd::Ones(kNodes));
+    double worst = 0;
+    for (int i = 0; i <= kChecks; ++i) {
+      const double s = 2.0 * i / kChecks;
+      worst = std::max(worst, std::abs(1 - chebyshev_series(c, s - 1) * p(s)));
+    }
+    if (worst <= kPolynomialFit) break;
+  }
+  return c;
+}
+
 }  // namespace
 
 bool biharmonic_low_pass(const VertexAdjacency& input_adjacency, const Positions& input, double mu, double first_order,
@@ -79,12 +127,53 @@ bool biharmonic_low_pass(const VertexAdjacency& input_adjacency, const Positions
     out += mu4 * y;
   };
 
+  // M^-1 r = D^-1/2 d q(S) D^-1/2 r by Clenshaw's recurrence on S - I = -D^-1/2 A D^-1/2 (A the
+  // adjacency), one sweep per degree, in the product's work vectors; a vertex of no face is
+  // solved exactly (its row of the system is mu^4).
+  const Eigen::VectorXd q_coefficients = inverse_polynomial(mu, first_order);
+  Eigen::VectorXd inverse_root_valence(n);
+  double inverse_valence_sum = 0;
+  int connected = 0;
+  for (int i = 0; i < n; ++i) {
+    inverse_root_valence[i] = std::sqrt(inverse_valence[i]);
+    inverse_valence_sum += inverse_valence[i];
+    connected += adjacency.valence(i) > 0;
+  }
+  const double mean_valence = connected > 0 ? connected / inverse_valence_sum : 1.0;  // harmonic mean
+  auto precondition = [&](const Positions& r, Positions& z) {
+    Positions& scaled = a;
+    Positions* b1 = &b;
+    Positions* b2 = &c;
+    scaled = inverse_root_valence.asDiagonal() * r;
+    b1->setZero(n, 3);
+    b2->setZero(n, 3);
+    z.resize(n, 3);
+    for (Eigen::Index k = q_coefficients.size() - 1; k >= 0; --k) {
+      const double ck = q_coefficients[k];
+      // k >= 1: b_k = c_k y + 2 (S - I) b_k+1 - b_k+2, written over b_k+2; k = 0: c_0 y + (S - I) b_1 - b_2.
+      Positions& out = k > 0 ? *b2 : z;
+      const double twice = k > 0 ? 2.0 : 1.0;
+      parallel_for(0, n, [&](int first, int last) {
+        for (int i = first; i < last; ++i) {
+          Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
+          for (const int* j = adjacency.begin(i); j != adjacency.end(i); ++j) sum += inverse_root_valence[*j] * b1->row(*j);
+          out.row(i) = ck * scaled.row(i) - twice * inverse_root_valence[i] * sum - b2->row(i);
+        }
+      });
+      if (k > 0) std::swap(b1, b2);
+    }
+    for (int i = 0; i < n; ++i)
+      z.row(i) = adjacency.valence(i) > 0 ? Eigen::RowVector3d(mean_valence * inverse_root_valence[i] * z.row(i))
+                                          : Eigen::RowVector3d(r.row(i) / mu4);
+  };
+
   x = v;
-  Positions r(n, 3), p, q(n, 3);
+  Positions r(n, 3), p, q(n, 3), z;
   apply(x, q);
   r = mu4 * v - q;
-  p = r;
-  Eigen::RowVector3d rr = r.colwise().squaredNorm();
+  precondition(r, z);
+  p = z;
+  Eigen::RowVector3d rz = (r.array() * z.array()).colwise().sum();
   auto bound = [&] { return r.norm() / mu4; };
   report.error_bound = bound();
   const double start = std::max(report.error_bound, max_error);
@@ -93,15 +182,16 @@ bool biharmonic_low_pass(const VertexAdjacency& input_adjacency, const Positions
     apply(p, q);
     const Eigen::RowVector3d pq = (p.array() * q.array()).colwise().sum();
     Eigen::RowVector3d alpha, beta;
-    for (int k = 0; k < 3; ++k) alpha[k] = pq[k] > 0 ? rr[k] / pq[k] : 0.0;
+    for (int k = 0; k < 3; ++k) alpha[k] = pq[k] > 0 ? rz[k] / pq[k] : 0.0;
     x += p * alpha.asDiagonal();
     r -= q * alpha.asDiagonal();
-    const Eigen::RowVector3d rr_next = r.colwise().squaredNorm();
-    for (int k = 0; k < 3; ++k) beta[k] = rr[k] > 0 ? rr_next[k] / rr[k] : 0.0;
-    p = r + p * beta.asDiagonal();
-    rr = rr_next;
+    precondition(r, z);
+    const Eigen::RowVector3d rz_next = (r.array() * z.array()).colwise().sum();
+    for (int k = 0; k < 3; ++k) beta[k] = rz[k] > 0 ? rz_next[k] / rz[k] : 0.0;
+    p = z + p * beta.asDiagonal();
+    rz = rz_next;
     report.error_bound = bound();
-    if (progress && report.iterations % 8 == 0)
+    if (progress)
       progress(std::log(start / std::max(report.error_bound, max_error)) / std::log(start / max_error));
   }
   result.resize(x.rows(), 3);

@@ -73,9 +73,6 @@ bool select_cutoff(const VertexAdjacency& full_adjacency, const Positions& full_
     const double mu = options.mu_largest / std::pow(options.step, k);
     double g;
     if (!score(mu, g)) {
-      // Stronger filters take more iterations: a grid point beyond the solver's reach ends the
-      // search at the points already scored (a noise level given far too high drives it there).
-      if (!selection.curve.empty()) break;
       error = "the cut-off selection's solve did not converge";
       return false;
     }

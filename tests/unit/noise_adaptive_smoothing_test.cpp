@@ -425,8 +425,8 @@ TEST(NoiseAdaptiveSmoothing, AGivenNoiseLevelChoosesTheCutoffByUnbiasedRisk) {
 }
 
 // A noise level given far too high (10 mean edges, the plugin's largest) drives Stein's risk to
-// cut-offs so strong that the solver cannot reach them: the search stops at the last one it
-// scored, the solve falls back to the noise level's cut-off, and the mesh is smoothed.
+// the strongest cut-offs of its range, far beyond the noise law's: the preconditioned solve reaches
+// them (plain conjugate gradients did not within their 5000 iterations) and the mesh is smoothed.
 TEST(NoiseAdaptiveSmoothing, ANoiseLevelGivenFarTooHighStillSmooths) {
   const test::ArrayMesh m = test::load_data_mesh("fandisk");
   NoiseAdaptiveSmoothingOptions o;
@@ -435,8 +435,7 @@ TEST(NoiseAdaptiveSmoothing, ANoiseLevelGivenFarTooHighStillSmooths) {
   NoiseAdaptiveSmoothingReport report;
   const Positions out = smooth(m.positions, m.faces, o, &report);
   EXPECT_TRUE(report.cutoff_by_risk);
-  EXPECT_TRUE(report.cutoff_unreachable);
-  EXPECT_DOUBLE_EQ(report.mu, kMuScale / std::sqrt(10.0));
+  EXPECT_LT(report.mu, 0.5 * kMuScale / std::sqrt(10.0));
   ASSERT_EQ(out.rows(), m.positions.rows());
   EXPECT_GT((out - m.positions).rowwise().norm().maxCoeff(), 0.0);
 }
