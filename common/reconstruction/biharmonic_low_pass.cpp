@@ -145,10 +145,11 @@ bool biharmonic_low_pass(const VertexAdjacency& input_adjacency, const Positions
     Positions* b1 = &b;
     Positions* b2 = &c;
     scaled = inverse_root_valence.asDiagonal() * r;
-    b1->setZero(n, 3);
+    const Eigen::Index degree = q_coefficients.size() - 1;  // at least 2
+    *b1 = q_coefficients[degree] * scaled;
     b2->setZero(n, 3);
     z.resize(n, 3);
-    for (Eigen::Index k = q_coefficients.size() - 1; k >= 0; --k) {
+    for (Eigen::Index k = degree - 1; k >= 0; --k) {
       const double ck = q_coefficients[k];
       // k >= 1: b_k = c_k y + 2 (S - I) b_k+1 - b_k+2, written over b_k+2; k = 0: c_0 y + (S - I) b_1 - b_2.
       Positions& out = k > 0 ? *b2 : z;
@@ -167,13 +168,14 @@ bool biharmonic_low_pass(const VertexAdjacency& input_adjacency, const Positions
                                           : Eigen::RowVector3d(r.row(i) / mu4);
   };
 
+  // q holds each product A p until r is updated, then the preconditioned residual M^-1 r.
   x = v;
-  Positions r(n, 3), p, q(n, 3), z;
+  Positions r(n, 3), p, q(n, 3);
   apply(x, q);
   r = mu4 * v - q;
-  precondition(r, z);
-  p = z;
-  Eigen::RowVector3d rz = (r.array() * z.array()).colwise().sum();
+  precondition(r, q);
+  p = q;
+  Eigen::RowVector3d rz = (r.array() * q.array()).colwise().sum();
   auto bound = [&] { return r.norm() / mu4; };
   report.error_bound = bound();
   const double start = std::max(report.error_bound, max_error);
@@ -185,10 +187,10 @@ bool biharmonic_low_pass(const VertexAdjacency& input_adjacency, const Positions
     for (int k = 0; k < 3; ++k) alpha[k] = pq[k] > 0 ? rz[k] / pq[k] : 0.0;
     x += p * alpha.asDiagonal();
     r -= q * alpha.asDiagonal();
-    precondition(r, z);
-    const Eigen::RowVector3d rz_next = (r.array() * z.array()).colwise().sum();
+    precondition(r, q);
+    const Eigen::RowVector3d rz_next = (r.array() * q.array()).colwise().sum();
     for (int k = 0; k < 3; ++k) beta[k] = rz[k] > 0 ? rz_next[k] / rz[k] : 0.0;
-    p = z + p * beta.asDiagonal();
+    p = q + p * beta.asDiagonal();
     rz = rz_next;
     report.error_bound = bound();
     if (progress)
