@@ -332,7 +332,7 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
   // filter stronger than the noise level's (docs/quality.md). Its search starts a little weaker
   // than that cut-off: nearer the identity its score falls again, spuriously (0/0 in the limit).
   // Both stop at kStrongestSelected times the noise level's cut-off: simple smooth surfaces want
-  // far stronger filters (docs/quality.md item 19), but the solve's iterations grow as 1 / mu^2.
+  // far stronger filters (docs/quality.md item 19), at the cost of their vertex distance.
   const bool by_risk = !(options.mu > 0) && options.unbiased_risk && options.noise > 0;
   if (by_risk || (!(options.mu > 0) && options.select_cutoff)) {
     const char* stage = by_risk ? "Cut-off by Stein's unbiased risk" : "Cut-off by cross-validation";

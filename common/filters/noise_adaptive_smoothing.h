@@ -93,9 +93,9 @@ constexpr double kSelectionBias = 1.2;
 // The weakest cut-off the cross-validation scores, relative to the noise level's (docs/quality.md).
 constexpr double kWeakestSearched = 1.5;
 // The strongest: the noise level's cut-off divided by this. Simple smooth surfaces take far
-// stronger filters than the law's (mech-holes-shark, a cylinder: docs/quality.md item 19); the
-// cost is the solve's, whose iterations grow as 1 / mu^2 (1.66M-vertex armadillo at 20%: 19 s
-// through meshlabserver with 2, 34 s with 3, 62 s with 4; docs/benchmarks.md).
+// stronger filters than the law's (mech-holes-shark, a cylinder: docs/quality.md item 19), but
+// beyond 3 their vertex distance rises as their angle error falls (measured with the
+// preconditioned solve, which costs no more for a stronger filter).
 constexpr double kStrongestSelected = 3.0;
 // Taubin's slide is a finish where the tangential share reads this or more: the share is read
 // against sigma's estimate, which a smooth surface's own curvature lifts by a few percent, so
