@@ -103,12 +103,15 @@ Positions capped_slides(const Positions& solved, const Positions& v, const Faces
     const double length = tangential.norm();
     if (length > cap) x.row(i) -= tangential * (1 - cap / length);
   }
-  const Positions smooth_normals = unit_face_normals(solved, faces);
+  // The faces left tilted are read before any is put back in a pass; one flag a face, not two
+  // arrays of normals (this step is near the smoothing's peak memory on large meshes).
+  std::vector<unsigned char> tilted(faces.rows());
   for (int pass = 0; pass < 3; ++pass) {
-    const Positions capped_normals = unit_face_normals(x, faces);
+    for (Eigen::Index f = 0; f < faces.rows(); ++f)
+      tilted[f] = !(unit_face_normal(x, faces, f).dot(unit_face_normal(solved, faces, f)) >= 0.5);
     bool changed = false;
     for (Eigen::Index f = 0; f < faces.rows(); ++f) {
-      if (capped_normals.row(f).dot(smooth_normals.row(f)) >= 0.5) continue;
+      if (!tilted[f]) continue;
       for (int k = 0; k < 3; ++k) {
         const int i = faces(f, k);
         changed |= x.row(i) != solved.row(i);

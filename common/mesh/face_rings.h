@@ -18,6 +18,10 @@ struct IndexLists {
 // Per vertex, the faces that use it (in face order).
 IndexLists vertex_faces(const Faces& faces, int vertex_count);
 
+// Face f's ring into `ring` (sorted, f included), from `around` = vertex_faces(faces, ...): for a
+// sweep over the faces that needs one ring at a time and not the whole list's memory.
+void face_ring(const Faces& faces, const IndexLists& around, Eigen::Index f, std::vector<int>& ring);
+
 // Faces must index vertices in [0, vertex_count).
 IndexLists face_rings(const Faces& faces, int vertex_count);
 

@@ -32,14 +32,16 @@ std::vector<unsigned char> folded_faces(const Positions& positions, const Faces&
   return folded;
 }
 
+Eigen::RowVector3d unit_face_normal(const Positions& positions, const Faces& faces, Eigen::Index f) {
+  const Eigen::RowVector3d a = positions.row(faces(f, 0));
+  const Eigen::RowVector3d c = (positions.row(faces(f, 1)) - a).cross(positions.row(faces(f, 2)) - a);
+  const double length = c.norm();
+  return length > 0 ? Eigen::RowVector3d(c / length) : Eigen::RowVector3d::Zero();
+}
+
 Positions unit_face_normals(const Positions& positions, const Faces& faces) {
   Positions normals(faces.rows(), 3);
-  for (Eigen::Index f = 0; f < faces.rows(); ++f) {
-    const Eigen::RowVector3d a = positions.row(faces(f, 0));
-    const Eigen::RowVector3d c = (positions.row(faces(f, 1)) - a).cross(positions.row(faces(f, 2)) - a);
-    const double length = c.norm();
-    normals.row(f) = length > 0 ? Eigen::RowVector3d(c / length) : Eigen::RowVector3d::Zero();
-  }
+  for (Eigen::Index f = 0; f < faces.rows(); ++f) normals.row(f) = unit_face_normal(positions, faces, f);
   return normals;
 }
 

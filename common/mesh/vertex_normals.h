@@ -20,5 +20,6 @@ std::vector<unsigned char> folded_faces(const Positions& positions, const Faces&
 
 // Per-face unit normals by the winding; zero for zero-area faces.
 Positions unit_face_normals(const Positions& positions, const Faces& faces);
+Eigen::RowVector3d unit_face_normal(const Positions& positions, const Faces& faces, Eigen::Index f);
 
 }  // namespace hht

@@ -173,6 +173,7 @@ bool biharmonic_low_pass(const VertexAdjacency& input_adjacency, const Positions
   Positions r(n, 3), p, q(n, 3);
   apply(x, q);
   r = mu4 * v - q;
+  v.resize(0, 3);  // the right-hand side is in r now: one vector less at the solve's peak
   precondition(r, q);
   p = q;
   Eigen::RowVector3d rz = (r.array() * q.array()).colwise().sum();
@@ -196,6 +197,7 @@ bool biharmonic_low_pass(const VertexAdjacency& input_adjacency, const Positions
     if (progress)
       progress(std::log(start / std::max(report.error_bound, max_error)) / std::log(start / max_error));
   }
+  for (Positions* work : {&r, &p, &q, &a, &b, &c}) work->resize(0, 3);
   result.resize(x.rows(), 3);
   for (size_t i = 0; i < order.size(); ++i) result.row(order[i]) = x.row(i);
   return true;
