@@ -28,8 +28,8 @@ struct BiharmonicLowPassReport {
 
 // first_order: g above (>= 0). Stops once ||X_k - X||_2 <= max_error, X the exact solution: since
 // the system matrix is at least mu^4 I, ||X_k - X||_2 <= ||residual||_2 / mu^4, and no vertex is
-// further off than that 2-norm. Starts from V. progress(fraction done) is called every few
-// iterations. False if the iteration cap is reached first.
+// further off than that 2-norm. Starts from V. progress(fraction done) is called every
+// iteration. False if the iteration cap (500) is reached first.
 bool biharmonic_low_pass(const VertexAdjacency& adjacency, const Positions& v, double mu, double first_order,
                          double max_error, Positions& x, BiharmonicLowPassReport& report,
                          const std::function<void(double)>& progress = {});

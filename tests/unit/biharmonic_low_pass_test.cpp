@@ -103,7 +103,7 @@ TEST(BiharmonicLowPass, StrongerFiltersTakeAboutAsManyIterations) {
 
 // A cut-off four times stronger than any the filters choose (their strongest is about 0.008),
 // beyond what the preconditioner's largest degree fits: the solve still converges to the direct
-// solution (in 39 iterations; plain conjugate gradients stop at their cap of 5000 far short of it).
+// solution (in 39 iterations; plain conjugate gradients stop at the cap of 500 far short of it).
 TEST(BiharmonicLowPass, AnExtremeCutOffStillConverges) {
   const test::ArrayMesh m = test::remove_faces(test::flip_random_edges(test::sphere(3), 500, 4), 11);
   const Positions v = add_gaussian_noise(m.positions, m.faces, 30, NoiseDirection::Isotropic, 5);
