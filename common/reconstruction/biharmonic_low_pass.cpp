@@ -156,21 +156,23 @@ bool biharmonic_low_pass(const VertexAdjacency& input_adjacency, const Positions
     z.resize(n, 3);
     for (Eigen::Index k = degree - 1; k >= 0; --k) {
       const double ck = q_coefficients[k];
-      // k >= 1: b_k = c_k y + 2 (S - I) b_k+1 - b_k+2, written over b_k+2; k = 0: c_0 y + (S - I) b_1 - b_2.
-      Positions& out = k > 0 ? *b2 : z;
-      const double twice = k > 0 ? 2.0 : 1.0;
+      // k >= 1: b_k = c_k y + 2 (S - I) b_k+1 - b_k+2, written over b_k+2; k = 0: q(S) y =
+      // c_0 y + (S - I) b_1 - b_2, scaled back by d D^-1/2 into z.
       parallel_for(0, n, [&](int first, int last) {
         for (int i = first; i < last; ++i) {
           Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
           for (const int* j = adjacency.begin(i); j != adjacency.end(i); ++j) sum += inverse_root_valence[*j] * b1->row(*j);
-          out.row(i) = ck * scaled.row(i) - twice * inverse_root_valence[i] * sum - b2->row(i);
+          if (k > 0) {
+            b2->row(i) = ck * scaled.row(i) - 2 * inverse_root_valence[i] * sum - b2->row(i);
+          } else {
+            const Eigen::RowVector3d qy = ck * scaled.row(i) - inverse_root_valence[i] * sum - b2->row(i);
+            z.row(i) = adjacency.valence(i) > 0 ? Eigen::RowVector3d(mean_valence * inverse_root_valence[i] * qy)
+                                                : Eigen::RowVector3d(r.row(i) / mu4);
+          }
         }
       });
-      if (k > 0) std::swap(b1, b2);
+      std::swap(b1, b2);
     }
-    for (int i = 0; i < n; ++i)
-      z.row(i) = adjacency.valence(i) > 0 ? Eigen::RowVector3d(mean_valence * inverse_root_valence[i] * z.row(i))
-                                          : Eigen::RowVector3d(r.row(i) / mu4);
   };
 
   // q holds each product A p until r is updated, then the preconditioned residual M^-1 r.
