@@ -211,8 +211,10 @@ bool apply(FilterRun& run) {
                 .arg(report.imfs.size()).arg(o.reconstruction.lambda).arg(report.reconstruction.iterations));
   }
   if (report.crease_contrast > 0)
-    run.log(QString("  crease contrast of the smoothed mesh %1 (below %2: no sharp creases)%3")
-                .arg(report.crease_contrast, 0, 'f', 1).arg(hht::kCreaseContrast)
+    run.log(QString("  crease contrast of the smoothed mesh %1, its crease lines %2 times its breadth "
+                    "(below %3 and %4: no sharp creases)%5")
+                .arg(report.crease_contrast, 0, 'f', 1).arg(report.crease_lines, 0, 'f', 1)
+                .arg(hht::kCreaseContrast).arg(hht::kCreaseLines)
                 .arg(!report.smoothed_instead ? ""
                      : report.smoothing.cutoff_by_risk ? "; the result is the adaptive smoothing (cut-off by Stein's unbiased risk with the given noise)"
                                    : "; the result is the adaptive smoothing (cross-validated cut-off)"));

@@ -258,10 +258,12 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
     if (report.untangled) start = smoothed;
     clock.done("untangling");
     // A surface without sharp creases (organic): the guided refinement, made for creases, would
-    // facet it; the adaptive smoothing with its cross-validated cut-off is the better result.
+    // facet it; the adaptive smoothing with its cross-validated cut-off is the better result. Long
+    // crease lines are creases too, however few of the edges they hold (a finely meshed part).
     const std::vector<DihedralAngle> angles = dihedral_angles(smoothed, faces);
     report.crease_contrast = crease_contrast(angles);
-    const bool no_creases = report.crease_contrast < kCreaseContrast;
+    report.crease_lines = crease_line_length(angles);
+    const bool no_creases = report.crease_contrast < kCreaseContrast && report.crease_lines < kCreaseLines;
     report.flat_parts_refined = no_creases && options.refine_flat_parts && report.noise.capped() && !report.untangled;
     if (route && no_creases && !report.flat_parts_refined && !report.smoothing_distorts) {
       step(40, "No sharp creases: adaptive smoothing");

@@ -29,7 +29,9 @@
 //    small features and creases that the patches blur; from the untangling's smoothing, which
 //    has little noise left, every round is (docs/quality.md item 16); from one round's noise on,
 //    or from the untangled start, the vertices are fitted after every pass (kFitEachPassIterations);
-//  - surfaces without sharp creases (crease_contrast.h of the smoothed mesh below kCreaseContrast)
+//  - surfaces without sharp creases (crease_contrast.h of the smoothed mesh below kCreaseContrast,
+//    and its crease lines shorter than kCreaseLines: a finely meshed part's creases are too few
+//    edges for the contrast's percentile, item 28)
 //    get the adaptive smoothing, cross-validated cut-off, as the result instead: the refinement
 //    facets them; not a mesh with exactly flat parts (its noise estimate capped by the flat
 //    hinges) that needed no untangling: a lightly noisy coarse CAD part, whose few-vertex creases
@@ -85,6 +87,11 @@ constexpr double kRefineMoveToNoise = 0.75;
 // sharp creases and the result is the adaptive smoothing (cross-validated cut-off) instead of the
 // refinement: on the corpus organic meshes read 5-9, CAD parts with creases 9.5-22 (docs/quality.md).
 constexpr double kCreaseContrast = 9.0;
+// ... unless its crease lines (crease_line_length) are at least this long: the creases of a
+// finely meshed part, too few edges for the contrast's percentile (fandisk with every triangle cut
+// in 16 reads 3.7-5.8 at 2-30% noise, the meshed cube so cut 3.8; organic meshes read at most 1.0
+// where their contrast is below kCreaseContrast, lion-head at 2%; docs/quality.md item 28).
+constexpr double kCreaseLines = 2.0;
 
 // The noise-level smoothing distorts a mesh whose features are a few edges wide (a coarse CAD
 // export): it moves it by more than the noise's RMS (sqrt(3) sigma) times kDistortingMove, where
@@ -161,6 +168,7 @@ struct DenoiseReport {
   double smoothing_move = 0;   // that smoothing's RMS move, in noise RMS (sqrt(3) sigma)
   int folded_faces = 0;        // input faces folded against their corners' normals
   double crease_contrast = 0;  // of that smoothing (0: not measured)
+  double crease_lines = 0;     // its crease lines' length (crease_line_length; 0: not measured)
   bool noise_free = false;     // the estimate read less than kNoiseFree: the result is the input
   bool smoothed_instead = false;  // no sharp creases: the result is the adaptive smoothing
   NoiseAdaptiveSmoothingReport smoothing;  // when smoothed_instead: that smoothing's report

@@ -26,7 +26,9 @@ TEST(KeepUntouchedVertices, ImpulsiveNoiseKeepsWhatItLeftAlone) {
   int at_input = 0;
   for (Eigen::Index v = 0; v < kept.rows(); ++v) {
     at_input += kept.row(v) == noisy.row(v);
-    if (kept.row(v) == noisy.row(v)) EXPECT_EQ(noisy.row(v), m.positions.row(v)) << v;  // only untouched ones
+    if (kept.row(v) == noisy.row(v)) {
+      EXPECT_EQ(noisy.row(v), m.positions.row(v)) << v;  // only untouched ones
+    }
   }
   EXPECT_GE(at_input, count);
   const double before = mean_face_normal_error_degrees(denoised, m.positions, m.faces);

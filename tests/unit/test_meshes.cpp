@@ -5,6 +5,7 @@
 #include <vcg/complex/algorithms/create/platonic.h>
 #include <wrap/io_trimesh/import_off.h>
 
+#include <map>
 #include <random>
 #include <set>
 #include <stdexcept>
@@ -41,6 +42,30 @@ ArrayMesh grid(int nx, int ny) {
       m.faces.row(f++) << a, d, c;
     }
   return m;
+}
+
+ArrayMesh midpoint_subdivision(const ArrayMesh& m) {
+  std::map<std::pair<int, int>, int> midpoint;
+  std::vector<Eigen::RowVector3d> added;
+  auto middle = [&](int a, int b) {
+    const auto [it, inserted] = midpoint.try_emplace({std::min(a, b), std::max(a, b)}, m.vertices() + static_cast<int>(added.size()));
+    if (inserted) added.push_back(0.5 * (m.positions.row(a) + m.positions.row(b)));
+    return it->second;
+  };
+  ArrayMesh out;
+  out.faces.resize(4 * m.faces.rows(), 3);
+  for (Eigen::Index f = 0; f < m.faces.rows(); ++f) {
+    const int a = m.faces(f, 0), b = m.faces(f, 1), c = m.faces(f, 2);
+    const int ab = middle(a, b), bc = middle(b, c), ca = middle(c, a);
+    out.faces.row(4 * f) << a, ab, ca;
+    out.faces.row(4 * f + 1) << ab, b, bc;
+    out.faces.row(4 * f + 2) << ca, bc, c;
+    out.faces.row(4 * f + 3) << ab, bc, ca;
+  }
+  out.positions.resize(m.vertices() + static_cast<Eigen::Index>(added.size()), 3);
+  out.positions.topRows(m.vertices()) = m.positions;
+  for (size_t i = 0; i < added.size(); ++i) out.positions.row(m.vertices() + static_cast<Eigen::Index>(i)) = added[i];
+  return out;
 }
 
 ArrayMesh sphere(int subdivisions, double radius) {

@@ -24,5 +24,7 @@ ArrayMesh torus(double major, double minor, int major_steps, int minor_steps);
 ArrayMesh remove_faces(const ArrayMesh& m, int every);  // drop every `every`-th face region: holes
 ArrayMesh disjoint_union(const ArrayMesh& a, const ArrayMesh& b);
 ArrayMesh flip_random_edges(const ArrayMesh& m, int flips, unsigned seed);
+// Each triangle cut into four at its edges' midpoints: the same surface, meshed twice as finely.
+ArrayMesh midpoint_subdivision(const ArrayMesh& m);
 
 }  // namespace hht::test
