@@ -25,6 +25,8 @@
 #include "mesh/crease_contrast.h"
 #include "mesh/hinge_heights.h"
 #include "filters/spike_removal.h"
+#include "reconstruction/recorrupted_risk.h"
+#include "mesh/tangential_noise.h"
 
 #include <Eigen/SparseCholesky>
 
@@ -34,6 +36,8 @@
 #include <set>
 #include <algorithm>
 #include <chrono>
+#include <array>
+#include <functional>
 
 using namespace hht;
 
@@ -1598,6 +1602,178 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "RS") {  // the route's statistics: the untangling smoothing's dihedral angles
+    std::string err;
+    HamiltonianCycle cycle;
+    hamiltonian_cycle(f, n, CycleOptions{}, cycle, err);
+    NoiseEstimate est;
+    estimate_noise(noisy, f, cycle, EmdOptions{}, est, err);
+    NoiseAdaptiveSmoothingOptions so = untangling_options(est.relative());
+    so.unturn_wrinkles = false;
+    so.face_normal_pass = false;
+    so.taubin_slide = false;
+    so.keep_untouched = false;
+    Positions smoothed;
+    NoiseAdaptiveSmoothingReport sr;
+    if (!noise_adaptive_smooth(noisy, f, so, smoothed, sr, err)) { std::printf("%s\n", err.c_str()); return 1; }
+    std::vector<double> d;
+    for (const auto& a : dihedral_angles(smoothed, f)) d.push_back(a.radians * 180 / M_PI);
+    std::sort(d.begin(), d.end());
+    auto at = [&](double q) { return d[static_cast<size_t>(q * (d.size() - 1))]; };
+    const double med = std::max(at(0.5), 0.573);
+    std::printf("RS edges %zu sigma %.4f median %.3f ratios", d.size(), est.relative(), at(0.5));
+    for (double q : {0.9, 0.95, 0.98, 0.99, 0.995, 0.998, 0.999}) std::printf(" %.2f", at(q) / med);
+    // the share of edges whose angle exceeds k times the median, times sqrt(edges) (lines scale so)
+    {  // crease lines: edges over k times the median, joined where they share a vertex; edges in components of at least 5% of sqrt(E), and the largest, per sqrt(E)
+      const std::vector<DihedralAngle> da = dihedral_angles(smoothed, f);
+      for (double k : {12.0, 16.0}) {
+        std::vector<int> parent(n);
+        for (int i = 0; i < n; ++i) parent[i] = i;
+        std::function<int(int)> find = [&](int x) { while (parent[x] != x) x = parent[x] = parent[parent[x]]; return x; };
+        std::vector<std::pair<int, int>> sharp;
+        for (const DihedralAngle& a : da)
+          if (a.radians * 180 / M_PI > k * med) { sharp.push_back({a.a, a.b}); parent[find(a.a)] = find(a.b); }
+        std::map<int, int> size;
+        for (const auto& e : sharp) ++size[find(e.first)];
+        const double root = std::sqrt(static_cast<double>(d.size()));
+        long in_long = 0;
+        int largest = 0;
+        for (const auto& [r, z] : size) { if (z >= 0.05 * root) in_long += z; largest = std::max(largest, z); }
+        std::printf(" | lines k%.0f: %.3f largest %.3f", k, in_long / root, largest / root);
+      }
+    }
+    std::printf(" | over k*median per sqrt(E):");
+    for (double k : {6.0, 9.0, 12.0, 16.0}) {
+      const double c = static_cast<double>(d.end() - std::upper_bound(d.begin(), d.end(), k * med));
+      std::printf(" %.3f", c / std::sqrt(static_cast<double>(d.size())));
+    }
+    {  // flat share: faces in regions (grown over shared edges, normals within a few degrees of the seed's) holding at least q of the faces
+      const Positions fn = face_normals(smoothed, f);
+      std::map<std::pair<int, int>, std::vector<int>> by_edge;
+      for (Eigen::Index g = 0; g < f.rows(); ++g)
+        for (int k = 0; k < 3; ++k) {
+          const int a = f(g, k), b = f(g, (k + 1) % 3);
+          by_edge[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(g));
+        }
+      std::vector<std::vector<int>> nb(f.rows());
+      for (const auto& [e, fs] : by_edge)
+        if (fs.size() == 2) { nb[fs[0]].push_back(fs[1]); nb[fs[1]].push_back(fs[0]); }
+      std::printf(" | flat share (deg: q 0.5%% 1%% 2%%)");
+      for (double deg : {3.0, 5.0, 8.0}) {
+        const double c = std::cos(deg * M_PI / 180);
+        std::vector<int> region(f.rows(), -1);
+        std::vector<size_t> sizes;
+        for (Eigen::Index s0 = 0; s0 < f.rows(); ++s0) {
+          if (region[s0] >= 0) continue;
+          std::vector<int> q{static_cast<int>(s0)};
+          region[s0] = static_cast<int>(sizes.size());
+          for (size_t k = 0; k < q.size(); ++k)
+            for (int g : nb[q[k]])
+              if (region[g] < 0 && fn.row(g).dot(fn.row(s0)) > c) { region[g] = region[s0]; q.push_back(g); }
+          sizes.push_back(q.size());
+        }
+        std::printf(" %.0f:", deg);
+        for (double qq : {0.005, 0.01, 0.02}) {
+          size_t in = 0;
+          for (size_t z : sizes) if (z >= qq * f.rows()) in += z;
+          std::printf(" %.3f", double(in) / f.rows());
+        }
+      }
+    }
+    std::printf("\n");
+    return 0;
+  }
+  if (argc > 3 && std::string(argv[3]) == "RT") {  // the denoiser's route (smoothing or refinement) scored by the recorrupted risk
+    std::string err;
+    DenoiseOptions o;
+    Positions out;
+    DenoiseReport r;
+    if (!feature_preserving_denoise(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); return 1; }
+    const double sigma = r.sigma_used;
+    auto smooth_route = [&](const Positions& y, double s, Positions& x) {
+      NoiseAdaptiveSmoothingOptions so;
+      so.noise = s;
+      so.keep_untouched = false;
+      NoiseAdaptiveSmoothingReport sr;
+      return noise_adaptive_smooth(y, f, so, x, sr, err);
+    };
+    auto refine_route = [&](const Positions& y, double s, Positions& x) {
+      DenoiseOptions ro;
+      ro.noise = s;
+      ro.smooth_surfaces_by_smoothing = false;
+      DenoiseReport rr;
+      return feature_preserving_denoise(y, f, ro, x, rr, err);
+    };
+    Positions xs, xr;
+    if (!smooth_route(noisy, sigma, xs) || !refine_route(noisy, sigma, xr)) { std::printf("%s\n", err.c_str()); return 1; }
+    const Score ss = score(xs, clean, f), sr = score(xr, clean, f), sd = score(out, clean, f), sn = score(noisy, clean, f);
+    const double copy_sigma = sigma * std::sqrt(1 + kRecorruptionScale * kRecorruptionScale);
+    const VertexAdjacency adj = vertex_adjacency(f, n);
+    NoiseShape shape;
+    Positions normals = area_weighted_vertex_normals(noisy, f);
+    for (int sweep = 0; sweep < 3; ++sweep) {  // as the smoothing's own (noise_adaptive_smoothing.cpp)
+      Positions next(n, 3);
+      for (int i = 0; i < n; ++i) {
+        Eigen::RowVector3d sum = normals.row(i);
+        for (const int* j = adj.begin(i); j != adj.end(i); ++j) sum += normals.row(*j);
+        next.row(i) = sum.norm() > 0 ? Eigen::RowVector3d(sum / sum.norm()) : Eigen::RowVector3d::Zero();
+      }
+      normals.swap(next);
+    }
+    shape.tangential_share = std::getenv("LAB_RTISO") ? 1.0 : std::min(1.0, tangential_noise_share(noisy, normals, adj, sigma * mean_edge_length(noisy, f)));
+    if (shape.tangential_share < 1) shape.unit_normals = normals;
+    const double edge = mean_edge_length(noisy, f);
+    // Both risks by hand: positions (as recorrupted_risks), and face area vectors (bilinear in the
+    // positions: y2's are unbiased for the clean mesh's), each face weighted by 1 / its area squared
+    // in y1 smoothed by Taubin (floored at a fifth of the mean).
+    std::mt19937 gen(kPassSeed);
+    std::normal_distribution<double> gz(0, sigma * edge);
+    const double across = std::sqrt(shape.tangential_share);
+    std::vector<std::array<double, 4>> draws;
+    auto area_vectors = [&](const Positions& p) {
+      Positions a(f.rows(), 3);
+      for (Eigen::Index g = 0; g < f.rows(); ++g)
+        a.row(g) = 0.5 * (p.row(f(g, 1)) - p.row(f(g, 0))).cross(p.row(f(g, 2)) - p.row(f(g, 0)));
+      return a;
+    };
+    for (int d = 0; d < kPassDraws; ++d) {
+      Positions z(n, 3);
+      for (int i = 0; i < n; ++i) for (int k = 0; k < 3; ++k) z(i, k) = gz(gen);
+      if (shape.tangential_share < 1)
+        for (int i = 0; i < n; ++i) {
+          const Eigen::RowVector3d nn = normals.row(i), along = z.row(i).dot(nn) * nn;
+          z.row(i) = along + across * (z.row(i) - along);
+        }
+      const Positions y1 = noisy + kRecorruptionScale * z, y2 = noisy - z / kRecorruptionScale;
+      Positions o1, o2;
+      if (!smooth_route(y1, copy_sigma, o1) || !refine_route(y1, copy_sigma, o2)) { std::printf("copy failed %s\n", err.c_str()); return 1; }
+      const Positions ref = area_vectors(taubin(y1, f, 10, 0.5, -0.53));
+      double mean_area = 0;
+      for (Eigen::Index g = 0; g < f.rows(); ++g) mean_area += ref.row(g).norm() / f.rows();
+      const Positions a2 = area_vectors(y2), a1s = area_vectors(o1), a1r = area_vectors(o2);
+      double as = 0, ar = 0;
+      for (Eigen::Index g = 0; g < f.rows(); ++g) {
+        const double w = 1 / std::pow(std::max(ref.row(g).norm(), 0.2 * mean_area), 2);
+        as += w * (a1s.row(g) - a2.row(g)).squaredNorm();
+        ar += w * (a1r.row(g) - a2.row(g)).squaredNorm();
+      }
+      if (std::getenv("LAB_RTCOPY")) {
+        const Score c1 = score(o1, clean, f), c2 = score(o2, clean, f);
+        std::printf("  copy %d: smooth %.2f/%.1f refine %.2f/%.1f; pos risk %.5g %.5g area %.5g %.5g\n", d, c1.ea, c1.rms, c2.ea, c2.rms, (o1 - y2).squaredNorm() / n, (o2 - y2).squaredNorm() / n, as / f.rows(), ar / f.rows());
+      }
+      draws.push_back({(o1 - y2).squaredNorm() / n, (o2 - y2).squaredNorm() / n, as / f.rows(), ar / f.rows()});
+    }
+    RecorruptedRisks risks, area_risks;
+    for (const auto& d : draws) { risks.per_draw.push_back({d[0], d[1]}); area_risks.per_draw.push_back({d[2], d[3]}); }
+    const std::vector<double> am = area_risks.mean(), m = risks.mean();
+    std::printf("RTA area s %.5g r %.5g ratio %.4f pick %s\n", am[0], am[1], am[1] / am[0], am[1] < am[0] ? "refine" : "smooth");
+    int refine_every = 1;
+    for (const auto& d : risks.per_draw) refine_every &= d[1] < d[0];
+    std::printf("RT noisy %.2f/%.1f shipped(s%d c%.2f) %.2f/%.1f smooth %.2f/%.1f refine %.2f/%.1f risk s %.5g r %.5g ratio %.4f every %d share %.2f truth %s pick %s\n",
+                sn.ea, sn.rms, int(r.smoothed_instead), r.crease_contrast, sd.ea, sd.rms, ss.ea, ss.rms, sr.ea, sr.rms, m[0], m[1], m[1] / m[0], refine_every,
+                shape.tangential_share, sr.ea < ss.ea ? "refine" : "smooth", m[1] < m[0] ? "refine" : "smooth");
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "D") {  // the denoiser with the untangling's filter from LAB_UFIRST, LAB_USCALE
     std::string err;
     DenoiseOptions o;
@@ -1649,6 +1825,7 @@ int main(int argc, char** argv) {
       std::printf("  removed part's edge correlation: normal %.3f, 3D %.3f; removed RMS %.3f sigma\n", cn / sn, c3 / s3,
                   std::sqrt((noisy - out).rowwise().squaredNorm().mean()) / (r.sigma_used * h));
     }
+    std::printf("  crease lines %.3f\n", r.crease_lines);
     std::printf("  crease contrast %.2f (input %.2f); estimate imf %.4f hinge %.4f capped %d\n", r.crease_contrast, crease_contrast(noisy, f), r.noise.imf_sigma / std::max(1e-300, r.noise.mean_edge), r.noise.hinge_sigma / std::max(1e-300, r.noise.mean_edge), int(r.noise.capped()));
     std::printf("  steps");
     for (double st : r.refine_steps) std::printf(" %.3f", st);
