@@ -1602,7 +1602,7 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
-  if (argc > 3 && std::string(argv[3]) == "RS") {  // the route's statistics: the untangling smoothing's dihedral angles
+  if (argc > 3 && std::string(argv[3]) == "CL") {  // the route's statistics: the untangling smoothing's dihedral angles
     std::string err;
     HamiltonianCycle cycle;
     hamiltonian_cycle(f, n, CycleOptions{}, cycle, err);
@@ -1621,12 +1621,12 @@ int main(int argc, char** argv) {
     std::sort(d.begin(), d.end());
     auto at = [&](double q) { return d[static_cast<size_t>(q * (d.size() - 1))]; };
     const double med = std::max(at(0.5), 0.573);
-    std::printf("RS edges %zu sigma %.4f median %.3f ratios", d.size(), est.relative(), at(0.5));
+    std::printf("CL edges %zu sigma %.4f median %.3f ratios", d.size(), est.relative(), at(0.5));
     for (double q : {0.9, 0.95, 0.98, 0.99, 0.995, 0.998, 0.999}) std::printf(" %.2f", at(q) / med);
     // the share of edges whose angle exceeds k times the median, times sqrt(edges) (lines scale so)
     {  // crease lines: edges over k times the median, joined where they share a vertex; edges in components of at least 5% of sqrt(E), and the largest, per sqrt(E)
       const std::vector<DihedralAngle> da = dihedral_angles(smoothed, f);
-      for (double k : {12.0, 16.0}) {
+      for (double k : {8.0, 10.0, 12.0, 16.0}) {
         std::vector<int> parent(n);
         for (int i = 0; i < n; ++i) parent[i] = i;
         std::function<int(int)> find = [&](int x) { while (parent[x] != x) x = parent[x] = parent[parent[x]]; return x; };
