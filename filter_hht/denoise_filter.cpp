@@ -41,7 +41,8 @@ void declare(const MeshDocument&, RichParameterList& p) {
                       "(a coarse CAD export, whose few-edge features it would flatten: refined from the input)."));
   p.addParam(RichBool("smoothCreaseless", d.smooth_surfaces_by_smoothing, "Smooth surfaces without sharp creases",
                       "When the smoothed mesh shows no sharp creases (the 98th percentile of its dihedral angles under "
-                      "9 times their median: organic models), the result is HHT: Adaptive Smooth's instead of the "
+                      "9 times their median, and its edges over 12 times the median forming lines shorter than twice "
+                      "the mesh's breadth: organic models), the result is HHT: Adaptive Smooth's instead of the "
                       "refinement, which would facet it; not on a mesh whose exactly flat parts capped the noise "
                       "estimate and that needed no untangling (a lightly noisy CAD part), nor on one that the smoothing "
                       "distorts (see Untangle). Turn off to force the refinement, e.g. on a CAD part with "
