@@ -369,6 +369,33 @@ NoiseAdaptiveSmoothingOptions untangling_options(double sigma) {
   return o;
 }
 
+// Near-flat regions: grown over shared (manifold) edges from each face not yet taken, holding the
+// faces whose unit normal `fn` stays within `degrees` of the seed's; their sizes in faces.
+std::vector<size_t> flat_region_sizes(const Positions& fn, const Faces& f, double degrees) {
+  std::map<std::pair<int, int>, std::vector<int>> by_edge;
+  for (Eigen::Index g = 0; g < f.rows(); ++g)
+    for (int k = 0; k < 3; ++k) {
+      const int a = f(g, k), b = f(g, (k + 1) % 3);
+      by_edge[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(g));
+    }
+  std::vector<std::vector<int>> nb(f.rows());
+  for (const auto& [e, fs] : by_edge)
+    if (fs.size() == 2) { nb[fs[0]].push_back(fs[1]); nb[fs[1]].push_back(fs[0]); }
+  const double c = std::cos(degrees * M_PI / 180);
+  std::vector<int> region(f.rows(), -1);
+  std::vector<size_t> sizes;
+  for (Eigen::Index s0 = 0; s0 < f.rows(); ++s0) {
+    if (region[s0] >= 0) continue;
+    std::vector<int> q{static_cast<int>(s0)};
+    region[s0] = static_cast<int>(sizes.size());
+    for (size_t k = 0; k < q.size(); ++k)
+      for (int g : nb[q[k]])
+        if (region[g] < 0 && fn.row(g).dot(fn.row(s0)) > c) { region[g] = region[s0]; q.push_back(g); }
+    sizes.push_back(q.size());
+  }
+  return sizes;
+}
+
 // Share of the faces of `a` whose normal points against the same face's in `b`.
 double turned_share(const Positions& a, const Positions& b, const Faces& f) {
   const Positions na = face_normals(a, f), nb = face_normals(b, f);
@@ -1647,31 +1674,11 @@ int main(int argc, char** argv) {
       const double c = static_cast<double>(d.end() - std::upper_bound(d.begin(), d.end(), k * med));
       std::printf(" %.3f", c / std::sqrt(static_cast<double>(d.size())));
     }
-    {  // flat share: faces in regions (grown over shared edges, normals within a few degrees of the seed's) holding at least q of the faces
+    {  // flat share: faces in near-flat regions holding at least q of the faces
       const Positions fn = face_normals(smoothed, f);
-      std::map<std::pair<int, int>, std::vector<int>> by_edge;
-      for (Eigen::Index g = 0; g < f.rows(); ++g)
-        for (int k = 0; k < 3; ++k) {
-          const int a = f(g, k), b = f(g, (k + 1) % 3);
-          by_edge[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(g));
-        }
-      std::vector<std::vector<int>> nb(f.rows());
-      for (const auto& [e, fs] : by_edge)
-        if (fs.size() == 2) { nb[fs[0]].push_back(fs[1]); nb[fs[1]].push_back(fs[0]); }
       std::printf(" | flat share (deg: q 0.5%% 1%% 2%%)");
       for (double deg : {3.0, 5.0, 8.0}) {
-        const double c = std::cos(deg * M_PI / 180);
-        std::vector<int> region(f.rows(), -1);
-        std::vector<size_t> sizes;
-        for (Eigen::Index s0 = 0; s0 < f.rows(); ++s0) {
-          if (region[s0] >= 0) continue;
-          std::vector<int> q{static_cast<int>(s0)};
-          region[s0] = static_cast<int>(sizes.size());
-          for (size_t k = 0; k < q.size(); ++k)
-            for (int g : nb[q[k]])
-              if (region[g] < 0 && fn.row(g).dot(fn.row(s0)) > c) { region[g] = region[s0]; q.push_back(g); }
-          sizes.push_back(q.size());
-        }
+        const std::vector<size_t> sizes = flat_region_sizes(fn, f, deg);
         std::printf(" %.0f:", deg);
         for (double qq : {0.005, 0.01, 0.02}) {
           size_t in = 0;
@@ -1868,32 +1875,11 @@ int main(int argc, char** argv) {
       std::printf("  dihedral: median %.2f p98 %.1f p99 %.1f p99.5 %.1f p99.9 %.1f; share over 30/45/60: %.4f %.4f %.4f\n", at(0.5), at(0.98), at(0.99), at(0.995), at(0.999),
                   double(over30) / d.size(), double(over45) / d.size(), double(over60) / d.size());
     }
-    {  // planar share: faces in regions (grown over shared edges) whose normals stay within 3 degrees of their seed's
+    {  // planar share: faces in near-flat regions (normals within a few degrees of their seed's) of 30 faces or more
       const Positions fn = face_normals(out, f);
-      std::map<std::pair<int, int>, std::vector<int>> by_edge;
-      for (Eigen::Index g = 0; g < f.rows(); ++g)
-        for (int k = 0; k < 3; ++k) {
-          const int a = f(g, k), b = f(g, (k + 1) % 3);
-          by_edge[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(g));
-        }
-      std::vector<std::vector<int>> nb(f.rows());
-      for (const auto& [e, fs] : by_edge)
-        if (fs.size() == 2) { nb[fs[0]].push_back(fs[1]); nb[fs[1]].push_back(fs[0]); }
       for (double deg : {2.0, 3.0, 5.0}) {
-        const double c = std::cos(deg * M_PI / 180);
-        std::vector<int> region(f.rows(), -1);
-        int regions = 0;
         long in_large = 0;
-        for (Eigen::Index s0 = 0; s0 < f.rows(); ++s0) {
-          if (region[s0] >= 0) continue;
-          std::vector<int> q{static_cast<int>(s0)};
-          region[s0] = regions;
-          for (size_t k = 0; k < q.size(); ++k)
-            for (int g : nb[q[k]])
-              if (region[g] < 0 && fn.row(g).dot(fn.row(s0)) > c) { region[g] = regions; q.push_back(g); }
-          if (q.size() >= 30) in_large += q.size();
-          ++regions;
-        }
+        for (size_t z : flat_region_sizes(fn, f, deg)) if (z >= 30) in_large += z;
         std::printf("  planar share (%.0f deg, regions of 30+ faces): %.3f\n", deg, double(in_large) / f.rows());
       }
     }
