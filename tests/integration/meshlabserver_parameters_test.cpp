@@ -3,6 +3,7 @@
 // quality and parameters in float: the library gets the input rounded to float, float-rounded
 // parameter values, and the comparison allows for the float rounding of what was saved.
 #include "meshlabserver_harness.h"
+#include "test_meshes.h"
 
 #include "filters/bilateral_denoise.h"
 #include "cycle/cycle_decomposition.h"
@@ -488,6 +489,36 @@ TEST(MeshlabserverParameters, DenoiseSmoothsSurfacesWithoutCreases) {
     EXPECT_EQ(run.log.find("the result is the adaptive smoothing") != std::string::npos, smooth) << run.log;
     EXPECT_EQ(run.log.find("refinement: ") != std::string::npos, !smooth) << run.log;
   }
+}
+
+// A finely meshed part (the meshed cube with every triangle cut in sixteen, 2% noise along the
+// normals), whose creases are too few edges for the crease contrast: denoise.mlx refines it, as
+// the library does, and the log names its crease lines (docs/quality.md item 28).
+TEST(MeshlabserverParameters, DenoiseRefinesAFinelyMeshedPart) {
+  const ArrayMesh cube = midpoint_subdivision(midpoint_subdivision(load_data_mesh("cube-meshed")));
+  const Positions noisy =
+      add_gaussian_noise(cube.positions, cube.faces, 2.0, NoiseDirection::Normal, 17).cast<float>().cast<double>();
+  const std::string input = output_path("cube_cut16_noisy.off");
+  {
+    std::ofstream out(input);
+    out << "OFF\n" << noisy.rows() << " " << cube.faces.rows() << " 0\n";
+    out.precision(9);
+    for (Eigen::Index v = 0; v < noisy.rows(); ++v) out << noisy(v, 0) << " " << noisy(v, 1) << " " << noisy(v, 2) << "\n";
+    for (Eigen::Index f = 0; f < cube.faces.rows(); ++f)
+      out << "3 " << cube.faces(f, 0) << " " << cube.faces(f, 1) << " " << cube.faces(f, 2) << "\n";
+  }
+  Positions expected;
+  DenoiseReport report;
+  std::string error;
+  ASSERT_TRUE(feature_preserving_denoise(noisy, cube.faces, DenoiseOptions{}, expected, report, error)) << error;
+  ASSERT_LT(report.crease_contrast, kCreaseContrast);
+  ASSERT_FALSE(report.smoothed_instead);
+  const ServerRun run = run_resource(input, "denoise.mlx", {}, "denoise_finely_meshed_part");
+  const double diagonal = (noisy.colwise().maxCoeff() - noisy.colwise().minCoeff()).norm();
+  expect_positions(saved_positions(run), expected, diagonal, "refined");
+  EXPECT_TRUE(std::regex_search(run.log, std::regex("its crease lines 3\\.[0-9] times its breadth"))) << run.log;
+  EXPECT_EQ(run.log.find("the result is the adaptive smoothing"), std::string::npos) << run.log;
+  EXPECT_NE(run.log.find("refinement: "), std::string::npos) << run.log;
 }
 
 // A coarse CAD export that the noise-level smoothing distorts (rotor, 5% noise along the normals):
