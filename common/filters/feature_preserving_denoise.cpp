@@ -261,8 +261,9 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
     // facet it; the adaptive smoothing with its cross-validated cut-off is the better result. Long
     // crease lines are creases too, however few of the edges they hold (a finely meshed part).
     const std::vector<DihedralAngle> angles = dihedral_angles(smoothed, faces);
-    report.crease_contrast = crease_contrast(angles);
-    report.crease_lines = crease_line_length(angles);
+    const CreaseReadings creases = read_creases(angles);
+    report.crease_contrast = creases.contrast;
+    report.crease_lines = creases.lines;
     const bool no_creases = report.crease_contrast < kCreaseContrast && report.crease_lines < kCreaseLines;
     report.flat_parts_refined = no_creases && options.refine_flat_parts && report.noise.capped() && !report.untangled;
     if (route && no_creases && !report.flat_parts_refined && !report.smoothing_distorts) {

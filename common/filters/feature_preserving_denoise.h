@@ -87,7 +87,7 @@ constexpr double kRefineMoveToNoise = 0.75;
 // sharp creases and the result is the adaptive smoothing (cross-validated cut-off) instead of the
 // refinement: on the corpus organic meshes read 5-9, CAD parts with creases 9.5-22 (docs/quality.md).
 constexpr double kCreaseContrast = 9.0;
-// ... unless its crease lines (crease_line_length) are at least this long: the creases of a
+// ... unless its crease lines (crease_contrast.h) are at least this long: the creases of a
 // finely meshed part, too few edges for the contrast's percentile (fandisk with every triangle cut
 // in 16 reads 3.7-5.8 at 2-30% noise, the meshed cube so cut 3.8; organic meshes read at most 1.0
 // where their contrast is below kCreaseContrast, lion-head at 2%; docs/quality.md item 28).
@@ -168,7 +168,7 @@ struct DenoiseReport {
   double smoothing_move = 0;   // that smoothing's RMS move, in noise RMS (sqrt(3) sigma)
   int folded_faces = 0;        // input faces folded against their corners' normals
   double crease_contrast = 0;  // of that smoothing (0: not measured)
-  double crease_lines = 0;     // its crease lines' length (crease_line_length; 0: not measured)
+  double crease_lines = 0;     // its crease lines' length (crease_contrast.h; 0: not measured)
   bool noise_free = false;     // the estimate read less than kNoiseFree: the result is the input
   bool smoothed_instead = false;  // no sharp creases: the result is the adaptive smoothing
   NoiseAdaptiveSmoothingReport smoothing;  // when smoothed_instead: that smoothing's report

@@ -28,19 +28,19 @@ TEST(CreaseContrast, CreasesAgainstEvenBending) {
 // below the contrast's 2% (docs/quality.md item 28).
 TEST(CreaseLines, KeepTheirLengthAsTheMeshIsRefined) {
   test::ArrayMesh cube = test::load_data_mesh("cube-meshed");
-  const double coarse = crease_line_length(dihedral_angles(cube.positions, cube.faces));
+  const double coarse = read_creases(dihedral_angles(cube.positions, cube.faces)).lines;
   EXPECT_GT(coarse, 3.0);
   for (int cuts = 1; cuts <= 2; ++cuts) {
     cube = test::midpoint_subdivision(cube);
-    const std::vector<DihedralAngle> angles = dihedral_angles(cube.positions, cube.faces);
-    EXPECT_NEAR(crease_line_length(angles), coarse, 0.1 * coarse) << cuts;
+    const CreaseReadings readings = read_creases(dihedral_angles(cube.positions, cube.faces));
+    EXPECT_NEAR(readings.lines, coarse, 0.1 * coarse) << cuts;
     if (cuts == 2) {
-      EXPECT_LT(crease_contrast(angles), 9.0);
+      EXPECT_LT(readings.contrast, 9.0);
     }
   }
   const test::ArrayMesh sphere = test::sphere(4);
-  EXPECT_EQ(crease_line_length(dihedral_angles(sphere.positions, sphere.faces)), 0.0);
-  EXPECT_EQ(crease_line_length({}), 0.0);
+  EXPECT_EQ(read_creases(dihedral_angles(sphere.positions, sphere.faces)).lines, 0.0);
+  EXPECT_EQ(read_creases({}).lines, 0.0);
 }
 
 // Sharp spots are not lines: spikes on a fine sphere make small clusters of sharp edges, each
@@ -52,7 +52,7 @@ TEST(CreaseLines, LeaveOutSharpSpots) {
   int sharp = 0;
   for (const DihedralAngle& a : angles) sharp += a.radians > 0.3;
   EXPECT_GT(sharp, 200);  // the spikes' edges are far over the median
-  EXPECT_EQ(crease_line_length(angles), 0.0);
+  EXPECT_EQ(read_creases(angles).lines, 0.0);
 }
 
 }  // namespace
