@@ -343,9 +343,9 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
       if (round > 0 && rounds_by_noise && sigma * edge > 0) {
         const double moved = std::sqrt((next - result).rowwise().squaredNorm().mean()) / (sigma * edge);
         report.refine_steps.push_back(moved);
-        // A round within the noise's count, unrounded, is judged by the drift step: rounded, blade's
-        // second round at 20% was judged as converging or not by a sigma of 0.1497 or 0.1502.
-        const bool within_count = round < asked || round < sigma / kNoisePerRound;
+        // The noise's count unrounded: rounded, blade's second round at 20% was judged as drifting
+        // or converging by a sigma of 0.1502 or 0.1497 (docs/quality.md item 29).
+        const bool within_count = round < sigma / kNoisePerRound;
         report.refine_round_undone = moved > (within_count ? options.refine_drift_step : options.refine_converged_step);
         if (report.refine_round_undone) break;
       }

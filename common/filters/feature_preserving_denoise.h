@@ -61,9 +61,9 @@ constexpr double kTangledShare = 0.0075;
 constexpr double kNoisePerRound = 0.1;
 
 // The refinement's rounds (when set by the noise) are cut short and extended by how far each
-// moves the mesh (RMS, in sigma * mean edge), measured after the first: a round of the noise's
-// count (rounded, or unrounded where that is more: item 29) that moves it by more than
-// kRoundDriftStep is undone and ends the refinement (the guided
+// moves the mesh (RMS, in sigma * mean edge), measured after the first: a round within the noise's
+// count (sigma / kNoisePerRound, unrounded: item 29) that moves it by more than kRoundDriftStep
+// is undone and ends the refinement (the guided
 // filter re-faceting curved parts of an irregular mesh: each such round adds error on turbine
 // and anchor_dense); after that count, up to kExtraRoundsFactor times as many rounds go on while
 // each moves it by less than kRoundConvergedStep (converging onto flat pieces: cube, blade).
