@@ -219,6 +219,14 @@ bool apply(FilterRun& run) {
                 .arg(!report.smoothed_instead ? ""
                      : report.smoothing.cutoff_by_risk ? "; the result is the adaptive smoothing (cut-off by Stein's unbiased risk with the given noise)"
                                    : "; the result is the adaptive smoothing (cross-validated cut-off)"));
+  if (report.refined_crease_contrast > 0)
+    run.log(QString("  heavy noise (%1 mean edges, from %2 on) can hide a part's creases from the smoothed mesh: a "
+                    "trial refinement reads a crease contrast of %3 (%4 %5: %6)")
+                .arg(report.sigma_used, 0, 'f', 3).arg(hht::kCreaseRevealNoise)
+                .arg(report.refined_crease_contrast, 0, 'f', 1)
+                .arg(report.creases_revealed ? "at least" : "below").arg(hht::kRevealedCreaseContrast)
+                .arg(report.creases_revealed ? "flat faces meeting at creases, refined after all"
+                                             : "no creases brought back, smoothed"));
   if (report.flat_parts_refined)
     run.log("  no sharp creases read, but the mesh has exactly flat parts (its noise estimate was capped by them): "
             "a CAD part, refined all the same");

@@ -146,6 +146,105 @@ bool paper_stage(const Positions& positions, const Faces& faces, const DenoiseOp
 
 namespace {
 
+// The refinement of `result` in place: guided normal filtering and vertex update in rounds (see
+// the header), progress from `from` to `to` percent. `near_creases` (of the noise-level smoothing;
+// empty: one range width) and report.untangled as the route found them.
+bool refine(const Faces& faces, const DenoiseOptions& options, double sigma, double edge,
+            const std::vector<unsigned char>& near_creases, Positions& result, DenoiseReport& report,
+            const std::function<void(int, const char*)>& step, int from, int to, std::string& error) {
+  // Below half a round's noise, one round with passes in proportion to the noise: light noise
+  // (Fandisk at 5%) is still cleaned, a clean curved mesh is not faceted.
+  int normal_passes = options.refine_normal_passes;
+  const bool rounds_by_noise = options.refine_rounds <= 0;
+  report.refine_rounds_asked = options.refine_rounds;
+  if (rounds_by_noise) {
+    report.refine_rounds_asked = std::max(1, static_cast<int>(std::lround(sigma / kNoisePerRound)));
+    if (sigma < 0.5 * kNoisePerRound)
+      normal_passes = static_cast<int>(std::lround(normal_passes * sigma / (0.5 * kNoisePerRound)));
+  }
+  report.refine_normal_passes = normal_passes;
+  if (normal_passes > 0 && options.refine_vertex_iterations > 0) {
+    step(from, "Refinement: guided normal filtering and vertex update");
+    GuidedNormalDenoiseOptions refine;
+    refine.rounds = 1;
+    refine.normal_passes = normal_passes;
+    refine.sigma = options.refine_normal_sigma;
+    if (!near_creases.empty() && options.refine_smooth_sigma > options.refine_normal_sigma) {
+      refine.face_sigma.resize(near_creases.size());
+      for (size_t f = 0; f < near_creases.size(); ++f)
+        refine.face_sigma[f] = near_creases[f] ? options.refine_normal_sigma : options.refine_smooth_sigma;
+      report.refine_near_creases =
+          static_cast<double>(std::count(near_creases.begin(), near_creases.end(), 1)) / static_cast<double>(near_creases.size());
+    }
+    refine.vertex_iterations = options.refine_vertex_iterations;
+    report.refine_fit_each_pass = options.refine_fit_each_pass && (sigma >= kNoisePerRound || report.untangled);
+    if (report.refine_fit_each_pass) {
+      refine.fit_each_pass = true;
+      refine.vertex_iterations = kFitEachPassIterations;
+    }
+    const Positions rebuilt = result;
+    // Rounds set by the noise end early at one that drifts, and go on (up to kExtraRoundsFactor times
+    // as many) while each converges (kRoundDriftStep, kRoundConvergedStep); a given count is done as is.
+    const int asked = report.refine_rounds_asked;
+    const int max_rounds =
+        rounds_by_noise ? std::max(asked, static_cast<int>(std::lround(options.refine_extra_rounds_factor * asked))) : asked;
+    GuidedNormalDenoiseOptions own;  // the last rounds: bilateral normal filtering, one width
+    own.normal_passes = refine.normal_passes;
+    own.vertex_iterations = refine.vertex_iterations;
+    own.fit_each_pass = refine.fit_each_pass;
+    own.sigma = kOwnNormalSigma;
+    own.guidance = NormalGuidance::OwnNormal;
+    for (int round = 0; round < max_rounds; ++round) {
+      const bool own_normals = options.refine_own_normals && (round >= asked - 1 || report.untangled);
+      Positions next;
+      if (!guided_normal_denoise(result, faces, own_normals ? own : refine, next, error, [&](double done) {
+            step(from + static_cast<int>((to - from) * (round + done) / max_rounds),
+                 "Refinement: guided normal filtering and vertex update");
+          }))
+        return false;
+      if (round > 0 && rounds_by_noise && sigma * edge > 0) {
+        const double moved = std::sqrt((next - result).rowwise().squaredNorm().mean()) / (sigma * edge);
+        report.refine_steps.push_back(moved);
+        // The noise's count unrounded: rounded, blade's second round at 20% was judged as drifting
+        // or converging by a sigma of 0.1502 or 0.1497 (docs/quality.md item 29).
+        const bool within_count = round < sigma / kNoisePerRound;
+        report.refine_round_undone = moved > (within_count ? options.refine_drift_step : options.refine_converged_step);
+        if (report.refine_round_undone) break;
+      }
+      result.swap(next);
+      ++report.refine_rounds;
+      report.refine_own_normal_rounds += own_normals;
+    }
+    // Discrepancy bound: the refinement removes noise, so it may move vertices by about the
+    // noise's RMS and no more; more is the guided filter faceting curved parts of the surface.
+    const double allowed = kRefineMoveToNoise * std::sqrt(3.0) * sigma * edge;
+    const double moved = std::sqrt((result - rebuilt).rowwise().squaredNorm().mean());
+    if (moved > allowed) {
+      result = rebuilt + (result - rebuilt) * (allowed / moved);
+      report.refine_scaled = allowed / moved;
+    }
+    // The start has no folds but the noise's own (left out): a face the vertex update turned
+    // over against it is a fold the refinement made (slivers at creases; docs/quality.md item 15).
+    if (options.refine_unturn) report.refine_unturned_faces = unturn_few_turned_faces(rebuilt, faces, 1.0, result);
+  }
+  return true;
+}
+
+// Back to no refinement in the report, after the trial of kCreaseRevealNoise: its rounds are not the result's.
+void forget_refinement(DenoiseReport& report) {
+  const DenoiseReport none;
+  report.refine_rounds_asked = none.refine_rounds_asked;
+  report.refine_rounds = none.refine_rounds;
+  report.refine_steps.clear();
+  report.refine_round_undone = none.refine_round_undone;
+  report.refine_normal_passes = none.refine_normal_passes;
+  report.refine_fit_each_pass = none.refine_fit_each_pass;
+  report.refine_scaled = none.refine_scaled;
+  report.refine_near_creases = none.refine_near_creases;
+  report.refine_unturned_faces = none.refine_unturned_faces;
+  report.refine_own_normal_rounds = none.refine_own_normal_rounds;
+}
+
 // The denoiser over every vertex; feature_preserving_denoise then keeps those impulsive noise left alone.
 bool denoise_every_vertex(const Positions& positions, const Faces& faces, const DenoiseOptions& options,
                           Positions& result, DenoiseReport& report, std::string& error, const Progress& progress) {
@@ -266,14 +365,32 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
     report.crease_lines = creases.lines;
     const bool no_creases = report.crease_contrast < kCreaseContrast && report.crease_lines < kCreaseLines;
     report.flat_parts_refined = no_creases && options.refine_flat_parts && report.noise.capped() && !report.untangled;
-    if (route && no_creases && !report.flat_parts_refined && !report.smoothing_distorts) {
-      step(40, "No sharp creases: adaptive smoothing");
+    near_creases = faces_near_creases(angles, faces, smoothed.rows(), kCreaseDihedral);
+    const bool smooth_instead = route && no_creases && !report.flat_parts_refined && !report.smoothing_distorts;
+    // Heavy noise flattens the creases of a flat-faced part's smoothing into the organic range: a
+    // refinement is tried, and where it brings back flat faces meeting at creases the surface is
+    // refined after all. The trial fits the vertices once a round, half the full refinement's
+    // time, and reads the same (docs/quality.md item 31).
+    if (smooth_instead && sigma >= kCreaseRevealNoise) {
+      DenoiseOptions trial = options;
+      trial.refine_fit_each_pass = false;
+      Positions refined = start;
+      if (!refine(faces, trial, sigma, edge, near_creases, refined, report, step, 30, 50, error)) return false;
+      clock.done("refinement tried");
+      forget_refinement(report);
+      report.refined_crease_contrast = crease_contrast(refined, faces);
+      report.creases_revealed = report.refined_crease_contrast >= kRevealedCreaseContrast;
+    }
+    if (smooth_instead && !report.creases_revealed) {
+      const int from = report.refined_crease_contrast > 0 ? 50 : 40;
+      step(from, "No sharp creases: adaptive smoothing");
       smoothing = NoiseAdaptiveSmoothingOptions{};  // the adaptive smoothing's own filter
       smoothing.keep_untouched = false;
       smoothing.noise = sigma;
       smoothing.unbiased_risk = options.noise > 0;  // the user's noise level: its cut-off by Stein's risk
-      if (!noise_adaptive_smooth(positions, faces, smoothing, result, smoothing_report, error,
-                                 [&](int percent, const char*) { step(40 + 59 * percent / 100, "No sharp creases: adaptive smoothing"); }))
+      if (!noise_adaptive_smooth(positions, faces, smoothing, result, smoothing_report, error, [&](int percent, const char*) {
+            step(from + (99 - from) * percent / 100, "No sharp creases: adaptive smoothing");
+          }))
         return false;
       report.smoothed_instead = true;
       report.smoothing = smoothing_report;
@@ -282,90 +399,16 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
       step(100, "Done");
       return true;
     }
-    near_creases = faces_near_creases(angles, faces, smoothed.rows(), kCreaseDihedral);
   }
 
-  if (options.detect_features && (options.paper_stage || options.show_features) && !detect_features(31)) return false;
+  const int from = options.paper_stage ? 70 : report.creases_revealed ? 50 : 30;
+  if (options.detect_features && (options.paper_stage || options.show_features) && !detect_features(report.creases_revealed ? 51 : 31))
+    return false;
   result = start;
   if (options.paper_stage && !paper_stage(start, faces, options, result, report, clock, step, error)) return false;
 
-  // Below half a round's noise, one round with passes in proportion to the noise: light noise
-  // (Fandisk at 5%) is still cleaned, a clean curved mesh is not faceted.
-  int normal_passes = options.refine_normal_passes;
-  const bool rounds_by_noise = options.refine_rounds <= 0;
-  report.refine_rounds_asked = options.refine_rounds;
-  if (rounds_by_noise) {
-    report.refine_rounds_asked = std::max(1, static_cast<int>(std::lround(sigma / kNoisePerRound)));
-    if (sigma < 0.5 * kNoisePerRound)
-      normal_passes = static_cast<int>(std::lround(normal_passes * sigma / (0.5 * kNoisePerRound)));
-  }
-  report.refine_normal_passes = normal_passes;
-  if (normal_passes > 0 && options.refine_vertex_iterations > 0) {
-    const int from = options.paper_stage ? 70 : 30;
-    step(from, "Refinement: guided normal filtering and vertex update");
-    GuidedNormalDenoiseOptions refine;
-    refine.rounds = 1;
-    refine.normal_passes = normal_passes;
-    refine.sigma = options.refine_normal_sigma;
-    if (!near_creases.empty() && options.refine_smooth_sigma > options.refine_normal_sigma) {
-      refine.face_sigma.resize(near_creases.size());
-      for (size_t f = 0; f < near_creases.size(); ++f)
-        refine.face_sigma[f] = near_creases[f] ? options.refine_normal_sigma : options.refine_smooth_sigma;
-      report.refine_near_creases =
-          static_cast<double>(std::count(near_creases.begin(), near_creases.end(), 1)) / static_cast<double>(near_creases.size());
-    }
-    refine.vertex_iterations = options.refine_vertex_iterations;
-    report.refine_fit_each_pass = options.refine_fit_each_pass && (sigma >= kNoisePerRound || report.untangled);
-    if (report.refine_fit_each_pass) {
-      refine.fit_each_pass = true;
-      refine.vertex_iterations = kFitEachPassIterations;
-    }
-    const Positions rebuilt = result;
-    // Rounds set by the noise end early at one that drifts, and go on (up to kExtraRoundsFactor times
-    // as many) while each converges (kRoundDriftStep, kRoundConvergedStep); a given count is done as is.
-    const int asked = report.refine_rounds_asked;
-    const int max_rounds =
-        rounds_by_noise ? std::max(asked, static_cast<int>(std::lround(options.refine_extra_rounds_factor * asked))) : asked;
-    GuidedNormalDenoiseOptions own;  // the last rounds: bilateral normal filtering, one width
-    own.normal_passes = refine.normal_passes;
-    own.vertex_iterations = refine.vertex_iterations;
-    own.fit_each_pass = refine.fit_each_pass;
-    own.sigma = kOwnNormalSigma;
-    own.guidance = NormalGuidance::OwnNormal;
-    for (int round = 0; round < max_rounds; ++round) {
-      const bool own_normals = options.refine_own_normals && (round >= asked - 1 || report.untangled);
-      Positions next;
-      if (!guided_normal_denoise(result, faces, own_normals ? own : refine, next, error, [&](double done) {
-            step(from + static_cast<int>((99 - from) * (round + done) / max_rounds),
-                 "Refinement: guided normal filtering and vertex update");
-          }))
-        return false;
-      if (round > 0 && rounds_by_noise && sigma * edge > 0) {
-        const double moved = std::sqrt((next - result).rowwise().squaredNorm().mean()) / (sigma * edge);
-        report.refine_steps.push_back(moved);
-        // The noise's count unrounded: rounded, blade's second round at 20% was judged as drifting
-        // or converging by a sigma of 0.1502 or 0.1497 (docs/quality.md item 29).
-        const bool within_count = round < sigma / kNoisePerRound;
-        report.refine_round_undone = moved > (within_count ? options.refine_drift_step : options.refine_converged_step);
-        if (report.refine_round_undone) break;
-      }
-      result.swap(next);
-      ++report.refine_rounds;
-      report.refine_own_normal_rounds += own_normals;
-    }
-    // Discrepancy bound: the refinement removes noise, so it may move vertices by about the
-    // noise's RMS and no more; more is the guided filter faceting curved parts of the surface.
-    const double allowed = kRefineMoveToNoise * std::sqrt(3.0) * sigma * edge;
-    const double moved = std::sqrt((result - rebuilt).rowwise().squaredNorm().mean());
-    if (moved > allowed) {
-      result = rebuilt + (result - rebuilt) * (allowed / moved);
-      report.refine_scaled = allowed / moved;
-    }
-    // The start has no folds but the noise's own (left out): a face the vertex update turned
-    // over against it is a fold the refinement made (slivers at creases; docs/quality.md item 15).
-    if (options.refine_unturn) report.refine_unturned_faces = unturn_few_turned_faces(rebuilt, faces, 1.0, result);
-    clock.done("refinement");
-  }
+  if (!refine(faces, options, sigma, edge, near_creases, result, report, step, from, 99, error)) return false;
+  if (report.refine_normal_passes > 0 && options.refine_vertex_iterations > 0) clock.done("refinement");
   step(100, "Done");
   return true;
 }

@@ -35,7 +35,8 @@
 //    get the adaptive smoothing, cross-validated cut-off, as the result instead: the refinement
 //    facets them; not a mesh with exactly flat parts (its noise estimate capped by the flat
 //    hinges) that needed no untangling: a lightly noisy coarse CAD part, whose few-vertex creases
-//    the smoothing of the crease contrast flattens;
+//    the smoothing of the crease contrast flattens; nor, at heavy noise (kCreaseRevealNoise), one
+//    whose trial refinement brings back flat faces meeting at creases (kRevealedCreaseContrast);
 //  - a mesh that the noise-level smoothing moves further than the noise did (kDistortingMove) is
 //    refined from its input, neither untangled nor smoothed, unless a tenth of its faces are folded
 //    (kHeavilyFolded): on a coarse CAD export, whose features are a few edges wide, the smoothing
@@ -93,6 +94,18 @@ constexpr double kCreaseContrast = 9.0;
 // in 16 reads 3.7-5.8 at 2-30% noise, the meshed cube so cut 3.8; organic meshes read at most 1.0
 // where their contrast is below kCreaseContrast, lion-head at 2%; docs/quality.md item 28).
 constexpr double kCreaseLines = 2.0;
+
+// From this noise on (sigma / mean edge), a surface read without sharp creases is given a trial
+// refinement (the vertices fitted once a round: half the time), and is refined after all
+// where the trial's result reads a crease contrast (crease_contrast.h) of at least
+// kRevealedCreaseContrast: flat faces meeting at sharp creases. Heavy noise flattens the creases
+// of a flat-faced part's smoothing into the organic range (fandisk at 70% reads 7.3), which no
+// reading of the smoothing tells apart (item 30); the trial on such parts reads 78-150 where on
+// organic meshes and coarse CAD exports it reads at most 40 (docs/quality.md item 31). Below this
+// noise the smoothing's contrast was right (the parts read below kCreaseContrast only from 0.31
+// on), and the trial would cost its time on every organic mesh for nothing.
+constexpr double kCreaseRevealNoise = 0.25;
+constexpr double kRevealedCreaseContrast = 60.0;
 
 // The noise-level smoothing distorts a mesh whose features are a few edges wide (a coarse CAD
 // export): it moves it by more than the noise's RMS (sqrt(3) sigma) times kDistortingMove, where
@@ -172,6 +185,9 @@ struct DenoiseReport {
   double crease_lines = 0;     // its crease lines' length (crease_contrast.h; 0: not measured)
   bool noise_free = false;     // the estimate read less than kNoiseFree: the result is the input
   bool smoothed_instead = false;  // no sharp creases: the result is the adaptive smoothing
+  double refined_crease_contrast = 0;  // no sharp creases read at kCreaseRevealNoise or more: the crease
+                                       // contrast of the trial refinement (0: not tried)
+  bool creases_revealed = false;  // ... at least kRevealedCreaseContrast: the surface was refined after all
   NoiseAdaptiveSmoothingReport smoothing;  // when smoothed_instead: that smoothing's report
   bool flat_parts_refined = false;  // no sharp creases read, but flat parts: refined all the same
   bool smoothing_distorts = false;  // the noise-level smoothing moved the mesh beyond the noise: refined from the input

@@ -552,6 +552,22 @@ TEST(MeshlabserverParameters, DenoiseRefinesADistortedCoarseExportFromItsInput) 
   EXPECT_NE(run.log.find("started from the input"), std::string::npos) << run.log;
 }
 
+// Fandisk at 70% isotropic noise: the smoothed mesh reads no sharp creases, a trial refinement
+// brings them back and the part is refined after all (item 31), as in the library; the log says so.
+TEST(MeshlabserverParameters, DenoiseKeepsARefinementThatBringsBackCreasesHeavyNoiseHid) {
+  DenoisedInput d;
+  ASSERT_NO_FATAL_FAILURE(denoise_noisy("fandisk", 70.0, NoiseDirection::Isotropic, {}, d));
+  ASSERT_LT(d.report.crease_contrast, kCreaseContrast);
+  ASSERT_TRUE(d.report.creases_revealed);
+  const ServerRun run = run_resource(d.path, "denoise.mlx", {}, "denoise_creases_revealed");
+  expect_positions(saved_positions(run), d.expected, d.in.diagonal, "creases revealed");
+  EXPECT_TRUE(std::regex_search(run.log, std::regex("a trial refinement reads a crease contrast of [0-9.]+ \\(at least 60: flat "
+                                                    "faces meeting at creases, refined after all\\)")))
+      << run.log;
+  EXPECT_EQ(run.log.find("the result is the adaptive smoothing"), std::string::npos) << run.log;
+  EXPECT_NE(run.log.find("refinement: "), std::string::npos) << run.log;
+}
+
 // The user's noise level reaches the denoiser's adaptive smoothing (a surface without creases),
 // whose cut-off Stein's unbiased risk then chooses: the same result as the library, and the log says so.
 TEST(MeshlabserverParameters, DenoiseWithAGivenNoiseChoosesTheCutoffByUnbiasedRisk) {
