@@ -1790,6 +1790,7 @@ int main(int argc, char** argv) {
     if (const char* x = std::getenv("LAB_RPASSES")) o.refine_normal_passes = std::atoi(x);
     if (const char* x = std::getenv("LAB_RITER")) o.refine_vertex_iterations = std::atoi(x);
     if (std::getenv("LAB_NOOWN")) o.refine_own_normals = false;
+    if (std::getenv("LAB_NOFITEACH")) o.refine_fit_each_pass = false;
     if (const char* x = std::getenv("LAB_ROUNDS")) o.refine_rounds = std::atoi(x);
     if (std::getenv("LAB_NOUNTANGLE")) o.untangle = false;
     if (const char* x = std::getenv("LAB_DRIFTSTEP")) o.refine_drift_step = std::atof(x);
@@ -1810,8 +1811,9 @@ int main(int argc, char** argv) {
     DenoiseReport r;
     if (!feature_preserving_denoise(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); return 1; }
     char name[80];
-    std::snprintf(name, sizeof name, "denoise (u%d s%d f%d sig %.3f r%d p%d fl%.4f sc%.2f)", int(r.untangled), int(r.smoothed_instead), int(r.flat_parts_refined),
-                  r.sigma_used, r.refine_rounds, r.refine_normal_passes, double(r.flipped_faces) / f.rows(), r.refine_scaled);
+    std::snprintf(name, sizeof name, "denoise (u%d s%d f%d sig %.3f r%d p%d fl%.4f sc%.2f cr%d %.1f)", int(r.untangled), int(r.smoothed_instead), int(r.flat_parts_refined),
+                  r.sigma_used, r.refine_rounds, r.refine_normal_passes, double(r.flipped_faces) / f.rows(), r.refine_scaled, int(r.creases_revealed),
+                  r.refined_crease_contrast);
     show(name, out);
     const std::vector<unsigned char> folded_out = folded_faces(out, f);
     const int out_folded = static_cast<int>(std::count(folded_out.begin(), folded_out.end(), 1));
