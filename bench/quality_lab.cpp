@@ -1885,6 +1885,14 @@ int main(int argc, char** argv) {
         std::printf("  planar share (%.0f deg, regions of 30+ faces): %.3f\n", deg, double(in_large) / f.rows());
       }
     }
+    if (std::getenv("LAB_ROUTESMOOTH")) {  // the smoothing the route would give, at the denoiser's noise level
+      NoiseAdaptiveSmoothingOptions so;
+      so.keep_untouched = false;
+      so.noise = r.sigma_used;
+      NoiseAdaptiveSmoothingReport sr;
+      Positions sm;
+      if (noise_adaptive_smooth(noisy, f, so, sm, sr, err)) show("route's smoothing", sm);
+    }
     if (const char* x = std::getenv("LAB_SMOOTHOWN")) {  // experiment: own-normal rounds after the smoothing route
       GuidedNormalDenoiseOptions b;
       b.guidance = NormalGuidance::OwnNormal;
