@@ -371,7 +371,8 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
     // refinement is tried, and where it brings back flat faces meeting at creases the surface is
     // refined after all. The trial fits the vertices once a round, half the full refinement's
     // time, and reads the same (docs/quality.md item 31).
-    if (smooth_instead && sigma >= kCreaseRevealNoise) {
+    const bool refinement_on = options.refine_normal_passes > 0 && options.refine_vertex_iterations > 0;
+    if (smooth_instead && refinement_on && sigma >= kCreaseRevealNoise) {
       DenoiseOptions trial = options;
       trial.refine_fit_each_pass = false;
       Positions refined = start;

@@ -651,6 +651,11 @@ TEST(FeaturePreservingDenoise, HeavyNoiseRefinesAPartWhoseSmoothingHidesItsCreas
   EXPECT_LT(mean_face_normal_error_degrees(result, fandisk.positions, fandisk.faces),
             0.6 * mean_face_normal_error_degrees(adaptive_smoothing(noisy, fandisk.faces, report.sigma_used),
                                                  fandisk.positions, fandisk.faces));
+  DenoiseOptions no_refinement;  // nothing to try: smoothed, as before
+  no_refinement.refine_normal_passes = 0;
+  denoise(noisy, fandisk.faces, no_refinement, &report);
+  EXPECT_EQ(report.refined_crease_contrast, 0);
+  EXPECT_TRUE(report.smoothed_instead);
 
   const test::ArrayMesh cow = test::load_data_mesh("cow");
   const Positions noisy_cow = add_gaussian_noise(cow.positions, cow.faces, 70, NoiseDirection::Isotropic, 17);
