@@ -365,14 +365,15 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
     report.crease_lines = creases.lines;
     const bool no_creases = report.crease_contrast < kCreaseContrast && report.crease_lines < kCreaseLines;
     report.flat_parts_refined = no_creases && options.refine_flat_parts && report.noise.capped() && !report.untangled;
-    near_creases = faces_near_creases(angles, faces, smoothed.rows(), kCreaseDihedral);
     const bool smooth_instead = route && no_creases && !report.flat_parts_refined && !report.smoothing_distorts;
     // Heavy noise flattens the creases of a flat-faced part's smoothing into the organic range: a
     // refinement is tried, and where it brings back flat faces meeting at creases the surface is
     // refined after all. The trial fits the vertices once a round, half the full refinement's
     // time, and reads the same (docs/quality.md item 31).
     const bool refinement_on = options.refine_normal_passes > 0 && options.refine_vertex_iterations > 0;
-    if (smooth_instead && refinement_on && sigma >= kCreaseRevealNoise) {
+    const bool try_refinement = smooth_instead && refinement_on && sigma >= kCreaseRevealNoise;
+    if (!smooth_instead || try_refinement) near_creases = faces_near_creases(angles, faces, smoothed.rows(), kCreaseDihedral);
+    if (try_refinement) {
       DenoiseOptions trial = options;
       trial.refine_fit_each_pass = false;
       Positions refined = start;
@@ -383,7 +384,7 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
       report.creases_revealed = report.refined_crease_contrast >= kRevealedCreaseContrast;
     }
     if (smooth_instead && !report.creases_revealed) {
-      const int from = report.refined_crease_contrast > 0 ? 50 : 40;
+      const int from = try_refinement ? 50 : 40;
       step(from, "No sharp creases: adaptive smoothing");
       smoothing = NoiseAdaptiveSmoothingOptions{};  // the adaptive smoothing's own filter
       smoothing.keep_untouched = false;
