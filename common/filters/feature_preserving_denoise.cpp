@@ -230,21 +230,6 @@ bool refine(const Faces& faces, const DenoiseOptions& options, double sigma, dou
   return true;
 }
 
-// Back to no refinement in the report, after the trial of kCreaseRevealNoise: its rounds are not the result's.
-void forget_refinement(DenoiseReport& report) {
-  const DenoiseReport none;
-  report.refine_rounds_asked = none.refine_rounds_asked;
-  report.refine_rounds = none.refine_rounds;
-  report.refine_steps.clear();
-  report.refine_round_undone = none.refine_round_undone;
-  report.refine_normal_passes = none.refine_normal_passes;
-  report.refine_fit_each_pass = none.refine_fit_each_pass;
-  report.refine_scaled = none.refine_scaled;
-  report.refine_near_creases = none.refine_near_creases;
-  report.refine_unturned_faces = none.refine_unturned_faces;
-  report.refine_own_normal_rounds = none.refine_own_normal_rounds;
-}
-
 // The denoiser over every vertex; feature_preserving_denoise then keeps those impulsive noise left alone.
 bool denoise_every_vertex(const Positions& positions, const Faces& faces, const DenoiseOptions& options,
                           Positions& result, DenoiseReport& report, std::string& error, const Progress& progress) {
@@ -377,9 +362,10 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
       DenoiseOptions trial = options;
       trial.refine_fit_each_pass = false;
       Positions refined = start;
-      if (!refine(faces, trial, sigma, edge, near_creases, refined, report, step, 30, 50, error)) return false;
+      DenoiseReport trial_report;  // its rounds are not the result's
+      trial_report.untangled = report.untangled;
+      if (!refine(faces, trial, sigma, edge, near_creases, refined, trial_report, step, 30, 50, error)) return false;
       clock.done("refinement tried");
-      forget_refinement(report);
       report.refined_crease_contrast = crease_contrast(refined, faces);
       report.creases_revealed = report.refined_crease_contrast >= kRevealedCreaseContrast;
     }

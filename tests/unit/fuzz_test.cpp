@@ -1,5 +1,5 @@
 // Every entry point of the library on random broken meshes from a fixed seed: random points and
-// faces, deleted faces, duplicated and collapsed vertices, faces repeating a vertex, scales from
+// faces, heavily noisy surfaces, deleted faces, duplicated and collapsed vertices, faces repeating a vertex, scales from
 // 1e-20 to 1e20, NaN and infinite coordinates. Each call must return a finite result or refuse
 // with a message, and leave its input as it was (compared bit for bit, NaN included).
 //
@@ -72,12 +72,17 @@ ArrayMesh keep_faces(const ArrayMesh& m, const std::vector<bool>& keep) {
 FuzzMesh random_mesh(std::mt19937& rng) {
   std::uniform_real_distribution<double> unit(0, 1);
   FuzzMesh fm;
-  const int base = std::uniform_int_distribution<int>(0, 4)(rng);
+  const int base = std::uniform_int_distribution<int>(0, 5)(rng);
   switch (base) {
     case 0: fm.mesh = sphere(2); fm.how = "sphere"; break;
     case 1: fm.mesh = torus(1, 0.4, 14, 8); fm.how = "torus"; break;
     case 2: fm.mesh = wavy_grid(9, 7); fm.how = "grid"; break;
     case 3: fm.mesh = disjoint_union(sphere(1), torus(1, 0.3, 10, 6)); fm.how = "two components"; break;
+    case 4:  // heavy noise: the denoiser's untangling and its trial refinement (kCreaseRevealNoise) run
+      fm.mesh = sphere(3);
+      fm.mesh.positions = add_gaussian_noise(fm.mesh.positions, fm.mesh.faces, 40, NoiseDirection::Isotropic, rng());
+      fm.how = "sphere, 40% noise";
+      break;
     default: fm.mesh = soup(rng); fm.how = "random soup"; break;
   }
   ArrayMesh& m = fm.mesh;
