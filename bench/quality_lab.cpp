@@ -1797,6 +1797,7 @@ int main(int argc, char** argv) {
     if (const char* x = std::getenv("LAB_EXTRAFACTOR")) o.refine_extra_rounds_factor = std::atof(x);
     if (const char* x = std::getenv("LAB_CONVERGEDSTEP")) o.refine_converged_step = std::atof(x);
     if (std::getenv("LAB_NOROUTE")) o.smooth_surfaces_by_smoothing = false;
+    if (const char* band = std::getenv("LAB_BAND")) std::sscanf(band, "%lf,%lf", &o.no_crease_contrast, &o.crease_contrast);
     if (std::getenv("LAB_NOFLAT")) o.refine_flat_parts = false;
     if (std::getenv("LAB_NODISTORT")) o.refine_where_smoothing_distorts = false;
     if (const char* x = std::getenv("LAB_SIGMA")) o.noise = std::atof(x);  // given noise (sigma / mean edge)
@@ -1811,7 +1812,7 @@ int main(int argc, char** argv) {
     DenoiseReport r;
     if (!feature_preserving_denoise(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); return 1; }
     char name[80];
-    std::snprintf(name, sizeof name, "denoise (u%d s%d f%d sig %.3f r%d p%d fl%.4f sc%.2f cr%d %.1f)", int(r.untangled), int(r.smoothed_instead), int(r.flat_parts_refined),
+    std::snprintf(name, sizeof name, "denoise (u%d s%d w%.2f f%d sig %.3f r%d p%d fl%.4f sc%.2f cr%d %.1f)", int(r.untangled), int(r.smoothed_instead), r.smoothing_weight, int(r.flat_parts_refined),
                   r.sigma_used, r.refine_rounds, r.refine_normal_passes, double(r.flipped_faces) / f.rows(), r.refine_scaled, int(r.creases_revealed),
                   r.refined_crease_contrast);
     show(name, out);
@@ -1835,7 +1836,7 @@ int main(int argc, char** argv) {
                   std::sqrt((noisy - out).rowwise().squaredNorm().mean()) / (r.sigma_used * h));
     }
     std::printf("  crease lines %.3f\n", r.crease_lines);
-    std::printf("  crease contrast %.2f (input %.2f); estimate imf %.4f hinge %.4f capped %d\n", r.crease_contrast, crease_contrast(noisy, f), r.noise.imf_sigma / std::max(1e-300, r.noise.mean_edge), r.noise.hinge_sigma / std::max(1e-300, r.noise.mean_edge), int(r.noise.capped()));
+    std::printf("  crease contrast %.2f (input %.2f, result %.2f); estimate imf %.4f hinge %.4f capped %d\n", r.crease_contrast, crease_contrast(noisy, f), crease_contrast(out, f), r.noise.imf_sigma / std::max(1e-300, r.noise.mean_edge), r.noise.hinge_sigma / std::max(1e-300, r.noise.mean_edge), int(r.noise.capped()));
     std::printf("  steps");
     for (double st : r.refine_steps) std::printf(" %.3f", st);
     std::printf("\n");
@@ -1892,6 +1893,7 @@ int main(int argc, char** argv) {
       NoiseAdaptiveSmoothingReport sr;
       Positions sm;
       if (noise_adaptive_smooth(noisy, f, so, sm, sr, err)) show("route's smoothing", sm);
+      if (std::getenv("LAB_BLEND") && sm.rows() == out.rows()) for (double w : {0.25, 0.5, 0.75}) { char nm[40]; std::snprintf(nm, sizeof nm, "blend %.2f of the smoothing", w); show(nm, Positions(w * sm + (1 - w) * out)); }
     }
     if (const char* x = std::getenv("LAB_SMOOTHOWN")) {  // experiment: own-normal rounds after the smoothing route
       GuidedNormalDenoiseOptions b;

@@ -213,13 +213,23 @@ bool apply(FilterRun& run) {
   }
   if (report.crease_contrast > 0)
     run.log(QString("  crease contrast of the smoothed mesh %1, its crease lines %2 times its breadth "
-                    "(below %3 and %4: no sharp creases)%5")
+                    "(below %3 and %4: no sharp creases; a contrast from %3 to %5 is uncertain)%6")
                 .arg(report.crease_contrast, 0, 'f', 1).arg(report.crease_lines, 0, 'f', 1)
-                .arg(hht::kCreaseContrast).arg(hht::kCreaseLines)
+                .arg(hht::kNoCreaseContrast).arg(hht::kCreaseLines).arg(hht::kCreaseContrast)
                 .arg(!report.smoothed_instead ? ""
                      : report.smoothing.cutoff_by_risk ? "; the result is the adaptive smoothing (cut-off by Stein's unbiased risk with the given noise)"
                                    : "; the result is the adaptive smoothing (cross-validated cut-off)"));
-  if (report.refined_crease_contrast > 0)
+  const bool blended = report.smoothing_weight > 0 && !report.smoothed_instead;
+  if (report.refined_crease_contrast > 0 && report.crease_contrast >= hht::kNoCreaseContrast)
+    run.log(QString("  uncertain creases: the refinement reads a crease contrast of %1 (%2 %3: %4)")
+                .arg(report.refined_crease_contrast, 0, 'f', 1)
+                .arg(report.creases_revealed ? "at least" : "below").arg(hht::kRevealedCreaseContrast)
+                .arg(report.creases_revealed
+                         ? "flat faces meeting at creases, the refinement is the result"
+                         : QString("the result is %1% the adaptive smoothing and %2% the refinement")
+                               .arg(100 * report.smoothing_weight, 0, 'f', 0)
+                               .arg(100 * (1 - report.smoothing_weight), 0, 'f', 0)));
+  else if (report.refined_crease_contrast > 0)
     run.log(QString("  heavy noise (%1 mean edges, from %2 on) can hide a part's creases from the smoothed mesh: a "
                     "trial refinement reads a crease contrast of %3 (%4 %5: %6)")
                 .arg(report.sigma_used, 0, 'f', 3).arg(hht::kCreaseRevealNoise)
@@ -228,11 +238,13 @@ bool apply(FilterRun& run) {
                 .arg(report.creases_revealed ? "flat faces meeting at creases, refined after all"
                                              : "no creases brought back, smoothed"));
   if (report.flat_parts_refined)
-    run.log("  no sharp creases read, but the mesh has exactly flat parts (its noise estimate was capped by them): "
+    run.log("  no sharp creases read for certain, but the mesh has exactly flat parts (its noise estimate was capped by them): "
             "a CAD part, refined all the same");
-  if (report.smoothed_instead) {
+  if (report.smoothed_instead || blended) {
     if (const QString line = tangential_share_line(report.smoothing.tangential_share); !line.isEmpty()) run.log(line);
     run.log(smoothing_finish_line(report.smoothing));
+  }
+  if (report.smoothed_instead) {
     run.log("  no refinement (the surface has no sharp creases)");
   } else if (report.refine_normal_passes > 0 && o.refine_vertex_iterations > 0) {
     const int own_rounds = report.refine_own_normal_rounds, guided_rounds = report.refine_rounds - own_rounds;

@@ -242,6 +242,10 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
     error = "refinement round rule out of range: drift step above 0, converged step at least 0, extra rounds factor 1 to 10";
     return false;
   }
+  if (!(options.no_crease_contrast >= 0 && options.no_crease_contrast <= options.crease_contrast && std::isfinite(options.crease_contrast))) {
+    error = "crease contrast band out of range: from 0 up to crease_contrast";
+    return false;
+  }
   if (!check_triangle_mesh(positions, faces, error)) return false;
   const int n = static_cast<int>(positions.rows());
 
@@ -345,32 +349,40 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
     // facet it; the adaptive smoothing with its cross-validated cut-off is the better result. Long
     // crease lines are creases too, however few of the edges they hold (a finely meshed part).
     const std::vector<DihedralAngle> angles = dihedral_angles(smoothed, faces);
-    const CreaseReadings creases = read_creases(angles);
-    report.crease_contrast = creases.contrast;
-    report.crease_lines = creases.lines;
-    const bool no_creases = report.crease_contrast < kCreaseContrast && report.crease_lines < kCreaseLines;
-    report.flat_parts_refined = no_creases && options.refine_flat_parts && report.noise.capped() && !report.untangled;
-    const bool smooth_instead = route && no_creases && !report.flat_parts_refined && !report.smoothing_distorts;
+    const CreaseReadings readings = read_creases(angles);
+    report.crease_contrast = readings.contrast;
+    report.crease_lines = readings.lines;
+    const bool creases = report.crease_contrast >= options.crease_contrast || report.crease_lines >= kCreaseLines;
+    report.flat_parts_refined = !creases && options.refine_flat_parts && report.noise.capped() && !report.untangled;
+    const bool may_smooth = route && !creases && !report.flat_parts_refined && !report.smoothing_distorts;
+    const bool refinement_on = options.refine_normal_passes > 0 && options.refine_vertex_iterations > 0;
+    // Between no_crease_contrast and crease_contrast the reading is uncertain (organic meshes with
+    // sharp details and CAD parts with soft creases read there, and one mesh reads on both sides of
+    // a threshold from one noise draw to the next): the refinement and the smoothing are blended,
+    // the smoothing's share falling across the band, which beats either result alone on most such
+    // meshes (docs/quality.md item 32).
+    const bool uncertain = may_smooth && refinement_on && report.crease_contrast >= options.no_crease_contrast;
     // Heavy noise flattens the creases of a flat-faced part's smoothing into the organic range: a
     // refinement is tried, and where it brings back flat faces meeting at creases the surface is
     // refined after all. The trial fits the vertices once a round, half the full refinement's
-    // time, and reads the same (docs/quality.md item 31).
-    const bool refinement_on = options.refine_normal_passes > 0 && options.refine_vertex_iterations > 0;
-    const bool try_refinement = smooth_instead && refinement_on && sigma >= kCreaseRevealNoise;
-    if (!smooth_instead || try_refinement) near_creases = faces_near_creases(angles, faces, smoothed.rows(), kCreaseDihedral);
-    if (try_refinement) {
+    // time, and reads the same (docs/quality.md item 31). In the uncertain band the refinement
+    // itself is read so.
+    const bool try_refinement = may_smooth && refinement_on && !uncertain && sigma >= kCreaseRevealNoise;
+    if (!may_smooth || try_refinement || uncertain) near_creases = faces_near_creases(angles, faces, smoothed.rows(), kCreaseDihedral);
+    Positions refined = start;
+    if (try_refinement || uncertain) {
       DenoiseOptions trial = options;
-      trial.refine_fit_each_pass = false;
-      Positions refined = start;
-      DenoiseReport trial_report;  // its rounds are not the result's
+      trial.refine_fit_each_pass = options.refine_fit_each_pass && uncertain;
+      DenoiseReport trial_report;  // the trial's rounds are not the result's
       trial_report.untangled = report.untangled;
-      if (!refine(faces, trial, sigma, edge, near_creases, refined, trial_report, step, 30, 50, error)) return false;
-      clock.done("refinement tried");
+      if (!refine(faces, trial, sigma, edge, near_creases, refined, uncertain ? report : trial_report, step, 30, 50, error))
+        return false;
+      clock.done(uncertain ? "refinement" : "refinement tried");
       report.refined_crease_contrast = crease_contrast(refined, faces);
       report.creases_revealed = report.refined_crease_contrast >= kRevealedCreaseContrast;
     }
-    if (smooth_instead && !report.creases_revealed) {
-      const int from = try_refinement ? 50 : 40;
+    if (may_smooth && !report.creases_revealed) {
+      const int from = try_refinement || uncertain ? 50 : 40;
       step(from, "No sharp creases: adaptive smoothing");
       smoothing = NoiseAdaptiveSmoothingOptions{};  // the adaptive smoothing's own filter
       smoothing.keep_untouched = false;
@@ -380,9 +392,22 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
             step(from + (99 - from) * percent / 100, "No sharp creases: adaptive smoothing");
           }))
         return false;
-      report.smoothed_instead = true;
       report.smoothing = smoothing_report;
       clock.done("adaptive smoothing");
+      if (uncertain) {
+        report.smoothing_weight = (options.crease_contrast - report.crease_contrast) /
+                                  (options.crease_contrast - options.no_crease_contrast);
+        result = report.smoothing_weight * result + (1 - report.smoothing_weight) * refined;
+      } else {
+        report.smoothing_weight = 1;
+        report.smoothed_instead = true;
+      }
+      if (options.detect_features && options.show_features && !detect_features(99)) return false;
+      step(100, "Done");
+      return true;
+    }
+    if (uncertain) {  // revealed: the refinement is the result
+      result.swap(refined);
       if (options.detect_features && options.show_features && !detect_features(99)) return false;
       step(100, "Done");
       return true;

@@ -29,14 +29,16 @@
 //    small features and creases that the patches blur; from the untangling's smoothing, which
 //    has little noise left, every round is (docs/quality.md item 16); from one round's noise on,
 //    or from the untangled start, the vertices are fitted after every pass (kFitEachPassIterations);
-//  - surfaces without sharp creases (crease_contrast.h of the smoothed mesh below kCreaseContrast,
+//  - surfaces without sharp creases (crease_contrast.h of the smoothed mesh below kNoCreaseContrast,
 //    and its crease lines shorter than kCreaseLines: a finely meshed part's creases are too few
 //    edges for the contrast's percentile, item 28)
 //    get the adaptive smoothing, cross-validated cut-off, as the result instead: the refinement
-//    facets them; not a mesh with exactly flat parts (its noise estimate capped by the flat
-//    hinges) that needed no untangling: a lightly noisy coarse CAD part, whose few-vertex creases
-//    the smoothing of the crease contrast flattens; nor, at heavy noise (kCreaseRevealNoise), one
-//    whose trial refinement brings back flat faces meeting at creases (kRevealedCreaseContrast);
+//    facets them; between kNoCreaseContrast and kCreaseContrast, where the reading is uncertain,
+//    a blend of the two (item 32); not a mesh with exactly flat parts (its noise estimate capped
+//    by the flat hinges) that needed no untangling: a lightly noisy coarse CAD part, whose
+//    few-vertex creases the smoothing of the crease contrast flattens; nor, at heavy noise
+//    (kCreaseRevealNoise) or in the uncertain band, one whose (trial) refinement brings back flat
+//    faces meeting at creases (kRevealedCreaseContrast);
 //  - a mesh that the noise-level smoothing moves further than the noise did (kDistortingMove) is
 //    refined from its input, neither untangled nor smoothed, unless a tenth of its faces are folded
 //    (kHeavilyFolded): on a coarse CAD export, whose features are a few edges wide, the smoothing
@@ -85,14 +87,18 @@ constexpr int kFitEachPassIterations = 10;
 // larger move is scaled down to it.
 constexpr double kRefineMoveToNoise = 0.75;
 
-// Below this crease contrast (crease_contrast.h) of the noise-level smoothing, the surface has no
-// sharp creases and the result is the adaptive smoothing (cross-validated cut-off) instead of the
-// refinement: on the corpus organic meshes read 5-9, CAD parts with creases 9.5-22 (docs/quality.md).
-constexpr double kCreaseContrast = 9.0;
+// Below kNoCreaseContrast (crease_contrast.h of the noise-level smoothing) the surface has no sharp
+// creases and the result is the adaptive smoothing (cross-validated cut-off) instead of the
+// refinement; from kCreaseContrast on it has creases and is refined; in between the two results are
+// blended, the smoothing's share falling linearly from 1 to 0 across the band. The corpus's organic
+// meshes read 5-9, its CAD parts with creases 9.5-22; lion-head reads 8.1-9.4 and mannequin-devil
+// 9-11 from one noise draw to the next, where the blend beats both results (docs/quality.md item 32).
+constexpr double kNoCreaseContrast = 8.5;
+constexpr double kCreaseContrast = 11.0;
 // ... unless its crease lines (crease_contrast.h) are at least this long: the creases of a
 // finely meshed part, too few edges for the contrast's percentile (fandisk with every triangle cut
 // in 16 reads 3.7-5.8 at 2-30% noise, the meshed cube so cut 3.8; organic meshes read at most 1.0
-// where their contrast is below kCreaseContrast, lion-head at 2%; docs/quality.md item 28).
+// where their contrast is below 9, lion-head at 2%; docs/quality.md item 28).
 constexpr double kCreaseLines = 2.0;
 
 // From this noise on (sigma / mean edge), a surface read without sharp creases is given a trial
@@ -102,8 +108,7 @@ constexpr double kCreaseLines = 2.0;
 // of a flat-faced part's smoothing into the organic range (fandisk at 70% reads 7.3), which no
 // reading of the smoothing tells apart (item 30); the trial on such parts reads 78-150 where on
 // organic meshes and coarse CAD exports it reads at most 40 (docs/quality.md item 31). Below this
-// noise the smoothing's contrast was right (the parts read below kCreaseContrast only from 0.31
-// on), and the trial would cost its time on every organic mesh for nothing.
+// noise the smoothing's contrast was right (the parts read below 9 only from 0.31 on), and the trial would cost its time on every organic mesh for nothing.
 constexpr double kCreaseRevealNoise = 0.25;
 constexpr double kRevealedCreaseContrast = 60.0;
 
@@ -141,7 +146,7 @@ struct DenoiseOptions {
   bool untangle = true;         // start from the noise-adaptive smoothing when the input is tangled
   double untangle_first_order = kUntangleFirstOrder;  // that smoothing's filter (experiments)
   double untangle_mu_scale = kUntangleMuScale;
-  bool smooth_surfaces_by_smoothing = true;  // no sharp creases (kCreaseContrast): the adaptive smoothing
+  bool smooth_surfaces_by_smoothing = true;  // no sharp creases (kNoCreaseContrast): the adaptive smoothing
                                              // (not with the paper's stage: that asks for the paper's method)
   bool refine_flat_parts = true;  // a mesh with exactly flat parts (its noise estimate capped by the
                                   // flat hinges: a CAD part) keeps the refinement unless untangled;
@@ -172,6 +177,8 @@ struct DenoiseOptions {
   double refine_drift_step = kRoundDriftStep;        // with rounds set by the noise (experiments)
   double refine_converged_step = kRoundConvergedStep;
   double refine_extra_rounds_factor = kExtraRoundsFactor;
+  double no_crease_contrast = kNoCreaseContrast;  // the uncertain band of the route (experiments)
+  double crease_contrast = kCreaseContrast;
 };
 
 struct DenoiseReport {
@@ -185,9 +192,11 @@ struct DenoiseReport {
   double crease_lines = 0;     // its crease lines' length (crease_contrast.h; 0: not measured)
   bool noise_free = false;     // the estimate read less than kNoiseFree: the result is the input
   bool smoothed_instead = false;  // no sharp creases: the result is the adaptive smoothing
-  double refined_crease_contrast = 0;  // no sharp creases read at kCreaseRevealNoise or more: the crease
-                                       // contrast of the trial refinement (0: not tried)
-  bool creases_revealed = false;  // ... at least kRevealedCreaseContrast: the surface was refined after all
+  double smoothing_weight = 0;    // the adaptive smoothing's share of the result: 1 when smoothed_instead,
+                                  // between 0 and 1 when blended with the refinement (uncertain creases)
+  double refined_crease_contrast = 0;  // the crease contrast of the refinement tried (no sharp creases read,
+                                       // at kCreaseRevealNoise or more) or blended (uncertain creases); 0: none
+  bool creases_revealed = false;  // ... at least kRevealedCreaseContrast: the refinement alone is the result
   NoiseAdaptiveSmoothingReport smoothing;  // when smoothed_instead: that smoothing's report
   bool flat_parts_refined = false;  // no sharp creases read, but flat parts: refined all the same
   bool smoothing_distorts = false;  // the noise-level smoothing moved the mesh beyond the noise: refined from the input

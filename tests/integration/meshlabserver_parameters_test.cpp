@@ -511,7 +511,7 @@ TEST(MeshlabserverParameters, DenoiseRefinesAFinelyMeshedPart) {
   DenoiseReport report;
   std::string error;
   ASSERT_TRUE(feature_preserving_denoise(noisy, cube.faces, DenoiseOptions{}, expected, report, error)) << error;
-  ASSERT_LT(report.crease_contrast, kCreaseContrast);
+  ASSERT_LT(report.crease_contrast, kNoCreaseContrast);
   ASSERT_FALSE(report.smoothed_instead);
   const ServerRun run = run_resource(input, "denoise.mlx", {}, "denoise_finely_meshed_part");
   const double diagonal = (noisy.colwise().maxCoeff() - noisy.colwise().minCoeff()).norm();
@@ -557,7 +557,7 @@ TEST(MeshlabserverParameters, DenoiseRefinesADistortedCoarseExportFromItsInput) 
 TEST(MeshlabserverParameters, DenoiseKeepsARefinementThatBringsBackCreasesHeavyNoiseHid) {
   DenoisedInput d;
   ASSERT_NO_FATAL_FAILURE(denoise_noisy("fandisk", 70.0, NoiseDirection::Isotropic, {}, d));
-  ASSERT_LT(d.report.crease_contrast, kCreaseContrast);
+  ASSERT_LT(d.report.crease_contrast, kNoCreaseContrast);
   ASSERT_TRUE(d.report.creases_revealed);
   const ServerRun run = run_resource(d.path, "denoise.mlx", {}, "denoise_creases_revealed");
   expect_positions(saved_positions(run), d.expected, d.in.diagonal, "creases revealed");
@@ -566,6 +566,25 @@ TEST(MeshlabserverParameters, DenoiseKeepsARefinementThatBringsBackCreasesHeavyN
       << run.log;
   EXPECT_EQ(run.log.find("the result is the adaptive smoothing"), std::string::npos) << run.log;
   EXPECT_NE(run.log.find("refinement: "), std::string::npos) << run.log;
+}
+
+// Mannequin-devil at 10% isotropic noise reads uncertain creases: denoise.mlx blends the refinement
+// and the adaptive smoothing (item 32), as the library does, and the log gives the shares.
+TEST(MeshlabserverParameters, DenoiseBlendsWhereTheCreasesAreUncertain) {
+  DenoisedInput d;
+  ASSERT_NO_FATAL_FAILURE(denoise_noisy("mannequin-devil", 10.0, NoiseDirection::Isotropic, {}, d));
+  ASSERT_GE(d.report.crease_contrast, kNoCreaseContrast);
+  ASSERT_LT(d.report.crease_contrast, kCreaseContrast);
+  ASSERT_GT(d.report.smoothing_weight, 0.0);
+  ASSERT_LT(d.report.smoothing_weight, 1.0);
+  const ServerRun run = run_resource(d.path, "denoise.mlx", {}, "denoise_uncertain_creases");
+  expect_positions(saved_positions(run), d.expected, d.in.diagonal, "blended");
+  EXPECT_TRUE(std::regex_search(run.log, std::regex("uncertain creases: the refinement reads a crease contrast of [0-9.]+ "
+                                                    "\\(below 60: the result is [0-9]+% the adaptive smoothing and "
+                                                    "[0-9]+% the refinement\\)")))
+      << run.log;
+  EXPECT_NE(run.log.find("refinement: "), std::string::npos) << run.log;
+  EXPECT_EQ(run.log.find("no refinement"), std::string::npos) << run.log;
 }
 
 // The user's noise level reaches the denoiser's adaptive smoothing (a surface without creases),
