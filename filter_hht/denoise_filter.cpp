@@ -40,13 +40,17 @@ void declare(const MeshDocument&, RichParameterList& p) {
                       "smoothing moves the mesh further than the noise did and fewer than 10% of its faces are folded "
                       "(a coarse CAD export, whose few-edge features it would flatten: refined from the input)."));
   p.addParam(RichBool("smoothCreaseless", d.smooth_surfaces_by_smoothing, "Smooth surfaces without sharp creases",
-                      "When the smoothed mesh shows no sharp creases (the 98th percentile of its dihedral angles under "
-                      "9 times their median, and its edges over 12 times the median forming lines shorter than twice "
-                      "the mesh's breadth: organic models), the result is HHT: Adaptive Smooth's instead of the "
-                      "refinement, which would facet it; not on a mesh whose exactly flat parts capped the noise "
-                      "estimate and that needed no untangling (a lightly noisy CAD part), nor on one that the smoothing "
-                      "distorts (see Untangle). Turn off to force the refinement, e.g. on a CAD part with "
-                      "rounded edges. Ignored with the paper's stage on."));
+                      QString("When the smoothed mesh shows no sharp creases (the 98th percentile of its dihedral angles "
+                              "under %1 times their median, and its edges over 12 times the median forming lines shorter "
+                              "than twice the mesh's breadth: organic models), the result is HHT: Adaptive Smooth's instead "
+                              "of the refinement, which would facet it; from %1 to %2 times, an uncertain reading, the two "
+                              "blended (the smoothing's share falling across that band), unless the refinement brings back "
+                              "flat faces meeting at creases; not on a mesh whose exactly flat parts capped the noise "
+                              "estimate and that needed no untangling (a lightly noisy CAD part), nor on one that the "
+                              "smoothing distorts (see Untangle). Turn off to force the refinement, e.g. on a CAD part with "
+                              "rounded edges. Ignored with the paper's stage on.")
+                          .arg(hht::kNoCreaseContrast)
+                          .arg(hht::kCreaseContrast)));
   p.addParam(RichInt("refineRounds", d.refine_rounds, "Refinement rounds (0 = by the noise)",
                      "Rounds of guided normal filtering and vertex update (0 to 100); 0 takes one per 10% of noise "
                      "(below 5%, one round of proportionally fewer passes, so a clean mesh is barely touched), stops "
