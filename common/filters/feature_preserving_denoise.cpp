@@ -230,6 +230,9 @@ bool refine(const Faces& faces, const DenoiseOptions& options, double sigma, dou
   return true;
 }
 
+bool blend_distorting_routes(const Positions& positions, const Faces& faces, const DenoiseOptions& options, double weight,
+                             Positions& result, DenoiseReport& report, std::string& error, const Progress& progress);
+
 // The denoiser over every vertex; feature_preserving_denoise then keeps those impulsive noise left alone.
 bool denoise_every_vertex(const Positions& positions, const Faces& faces, const DenoiseOptions& options,
                           Positions& result, DenoiseReport& report, std::string& error, const Progress& progress) {
@@ -240,6 +243,10 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
   if (!(options.refine_drift_step > 0) || !(options.refine_converged_step >= 0) ||
       !(options.refine_extra_rounds_factor >= 1 && options.refine_extra_rounds_factor <= 10)) {
     error = "refinement round rule out of range: drift step above 0, converged step at least 0, extra rounds factor 1 to 10";
+    return false;
+  }
+  if (!(options.distorting_move_low >= 0 && options.distorting_move_low <= options.distorting_move_high)) {
+    error = "distorting move band out of range: from 0 up to distorting_move_high";
     return false;
   }
   if (!(options.no_crease_contrast >= 0 && options.no_crease_contrast <= options.crease_contrast && std::isfinite(options.crease_contrast))) {
@@ -339,8 +346,16 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
     report.smoothing_move = noise_rms > 0 ? std::sqrt((smoothed - positions).rowwise().squaredNorm().mean()) / noise_rms : 0;
     const std::vector<unsigned char> folded = folded_faces(positions, faces);
     report.folded_faces = static_cast<int>(std::count(folded.begin(), folded.end(), 1));
-    report.smoothing_distorts = options.refine_where_smoothing_distorts && report.smoothing_move > kDistortingMove &&
-                                report.folded_faces < kHeavilyFolded * static_cast<double>(faces.rows());
+    const bool distort_rule =
+        options.refine_where_smoothing_distorts && report.folded_faces < kHeavilyFolded * static_cast<double>(faces.rows());
+    const double low = options.distorting_move_low, high = options.distorting_move_high;
+    const double distort_weight = !distort_rule || report.smoothing_move <= low ? 0.0
+                                  : report.smoothing_move >= high             ? 1.0
+                                                                               : (report.smoothing_move - low) / (high - low);
+    if (distort_weight > 0 && distort_weight < 1)  // uncertain: both results, blended (item 33)
+      return blend_distorting_routes(positions, faces, options, distort_weight, result, report, error, progress);
+    report.smoothing_distorts = distort_weight == 1;
+    report.distort_weight = distort_weight;
     report.untangled = options.untangle && !report.smoothing_distorts &&
                        report.flipped_faces > kTangledShare * static_cast<double>(faces.rows());
     if (report.untangled) start = smoothed;
@@ -423,6 +438,33 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
   if (!refine(faces, options, sigma, edge, near_creases, result, report, step, from, 99, error)) return false;
   if (report.refine_normal_passes > 0 && options.refine_vertex_iterations > 0) clock.done("refinement");
   step(100, "Done");
+  return true;
+}
+
+// An uncertain move of the noise-level smoothing (item 33): the mesh denoised both ways, refined
+// from its input (item 17) and routed as usual, and the two blended with `weight` on the first.
+// The report is the usual route's.
+bool blend_distorting_routes(const Positions& positions, const Faces& faces, const DenoiseOptions& options, double weight,
+                             Positions& result, DenoiseReport& report, std::string& error, const Progress& progress) {
+  const auto part = [&](int from, int to) -> Progress {
+    if (!progress) return {};
+    return [&progress, from, to](int percent, const char* stage) { progress(from + (to - from) * percent / 100, stage); };
+  };
+  DenoiseOptions from_input = options, routed = options;
+  from_input.distorting_move_low = from_input.distorting_move_high = 0;  // any move distorts
+  routed.refine_where_smoothing_distorts = false;
+  Positions refined;
+  DenoiseReport refined_report;
+  if (!denoise_every_vertex(positions, faces, from_input, refined, refined_report, error, part(30, 60))) return false;
+  DenoiseReport routed_report;
+  if (!denoise_every_vertex(positions, faces, routed, result, routed_report, error, part(60, 99))) return false;
+  result = weight * refined + (1 - weight) * result;
+  report = std::move(routed_report);
+  report.distort_weight = weight;
+  double seconds = 0;
+  for (const StageTime& stage : refined_report.stages) seconds += stage.seconds;
+  report.stages.push_back({"refinement from the input (blended)", seconds});
+  if (progress) progress(100, "Done");
   return true;
 }
 

@@ -568,6 +568,21 @@ TEST(MeshlabserverParameters, DenoiseKeepsARefinementThatBringsBackCreasesHeavyN
   EXPECT_NE(run.log.find("refinement: "), std::string::npos) << run.log;
 }
 
+// Handle at 10% noise along the normals: its noise-level smoothing moves it by about the noise's RMS,
+// an uncertain reading of item 17's rule; denoise.mlx blends the refinement from the input and the
+// usual route (item 33), as the library does, and the log gives the shares.
+TEST(MeshlabserverParameters, DenoiseBlendsWhereTheSmoothingsMoveIsUncertain) {
+  DenoisedInput d;
+  ASSERT_NO_FATAL_FAILURE(denoise_noisy("handle", 10.0, NoiseDirection::Normal, {}, d));
+  ASSERT_GT(d.report.distort_weight, 0.0);
+  ASSERT_LT(d.report.distort_weight, 1.0);
+  const ServerRun run = run_resource(d.path, "denoise.mlx", {}, "denoise_uncertain_move");
+  expect_positions(saved_positions(run), d.expected, d.in.diagonal, "blended routes");
+  EXPECT_TRUE(std::regex_search(run.log, std::regex("an uncertain reading \\(from 0\\.9 to 1\\.1\\): the result is [0-9]+% the "
+                                                    "refinement from the input and [0-9]+% the usual route's below")))
+      << run.log;
+}
+
 // Mannequin-devil at 10% isotropic noise reads uncertain creases: denoise.mlx blends the refinement
 // and the adaptive smoothing (item 32), as the library does, and the log gives the shares.
 TEST(MeshlabserverParameters, DenoiseBlendsWhereTheCreasesAreUncertain) {

@@ -374,14 +374,49 @@ TEST(FeaturePreservingDenoise, CoarseCadExportIsRefinedFromItsInput) {
   const double e_with = mean_face_normal_error_degrees(denoise(noisy, m.faces, o, &with), m.positions, m.faces);
   o.refine_where_smoothing_distorts = false;
   const double e_without = mean_face_normal_error_degrees(denoise(noisy, m.faces, o, &without), m.positions, m.faces);
-  EXPECT_GT(with.smoothing_move, kDistortingMove);
+  EXPECT_GE(with.smoothing_move, kDistortingMoveHigh);
   EXPECT_LT(with.folded_faces, kHeavilyFolded * m.faces.rows());
+  EXPECT_EQ(with.distort_weight, 1.0);
   EXPECT_TRUE(with.smoothing_distorts);
   EXPECT_FALSE(with.untangled);
   EXPECT_FALSE(with.smoothed_instead);
   EXPECT_TRUE(without.untangled);
   EXPECT_LT(e_with, 0.6 * mean_face_normal_error_degrees(noisy, m.positions, m.faces));
   EXPECT_LT(e_with, 0.6 * e_without);
+}
+
+// An uncertain move (item 33): handle, a coarse CAD export, at 10% noise along the normals is
+// moved by its noise-level smoothing by 1.00-1.03 times the noise's RMS over noise draws, and
+// which route serves it does not follow that reading (the usual route 17-19 degrees, refined from
+// the input 23-25). The result blends the two, the share of the refinement from the input rising
+// across kDistortingMoveLow to kDistortingMoveHigh, where the old threshold at 1 gave the
+// refinement from the input alone (docs/quality.md item 33).
+TEST(FeaturePreservingDenoise, AnUncertainMoveBlendsBothRoutes) {
+  const test::ArrayMesh m = test::load_data_mesh("handle");
+  const Positions noisy = add_gaussian_noise(m.positions, m.faces, 10, NoiseDirection::Normal, 1);
+  DenoiseReport report;
+  const Positions blended = denoise(noisy, m.faces, {}, &report);
+  EXPECT_GT(report.smoothing_move, kDistortingMoveLow);
+  EXPECT_LT(report.smoothing_move, kDistortingMoveHigh);
+  EXPECT_LT(report.folded_faces, kHeavilyFolded * m.faces.rows());
+  const double w = report.distort_weight;
+  EXPECT_NEAR(w, (report.smoothing_move - kDistortingMoveLow) / (kDistortingMoveHigh - kDistortingMoveLow), 1e-12);
+  ASSERT_GT(w, 0.05);
+  ASSERT_LT(w, 0.95);
+  EXPECT_FALSE(report.smoothing_distorts);
+
+  DenoiseOptions from_input, routed, threshold;
+  from_input.distorting_move_low = from_input.distorting_move_high = 0;
+  routed.refine_where_smoothing_distorts = false;
+  threshold.distorting_move_low = threshold.distorting_move_high = 1;  // the rule before item 33
+  DenoiseReport from_input_report;
+  const Positions refined = denoise(noisy, m.faces, from_input, &from_input_report);
+  EXPECT_TRUE(from_input_report.smoothing_distorts);
+  const Positions usual = denoise(noisy, m.faces, routed);
+  const double diagonal = (m.positions.colwise().maxCoeff() - m.positions.colwise().minCoeff()).norm();
+  EXPECT_LT((blended - (w * refined + (1 - w) * usual)).cwiseAbs().maxCoeff(), 1e-9 * diagonal);
+  EXPECT_LT(mean_face_normal_error_degrees(blended, m.positions, m.faces),
+            mean_face_normal_error_degrees(denoise(noisy, m.faces, threshold), m.positions, m.faces) - 2);
 }
 
 // The same mesh at 20% isotropic noise has a fifth of its faces folded: only the smoothing
@@ -391,15 +426,17 @@ TEST(FeaturePreservingDenoise, HeavilyFoldedCoarseExportIsStillUntangled) {
   const Positions noisy = add_gaussian_noise(m.positions, m.faces, 20, NoiseDirection::Isotropic, 11);
   DenoiseReport report;
   const double e = mean_face_normal_error_degrees(denoise(noisy, m.faces, {}, &report), m.positions, m.faces);
-  EXPECT_GT(report.smoothing_move, kDistortingMove);
+  EXPECT_GT(report.smoothing_move, kDistortingMoveHigh);
   EXPECT_GE(report.folded_faces, kHeavilyFolded * m.faces.rows());
   EXPECT_FALSE(report.smoothing_distorts);
+  EXPECT_EQ(report.distort_weight, 0.0);
   EXPECT_TRUE(report.untangled);
   EXPECT_LT(e, 0.7 * mean_face_normal_error_degrees(noisy, m.positions, m.faces));
 }
 
 // On the corpus's meshes the noise-level smoothing moves the mesh by less than the noise did
-// (at most 0.96 of its RMS at 2-30% noise): the rule leaves them as they were.
+// (at most 0.96 of its RMS at 2-30% noise, and below kDistortingMoveLow where fewer than
+// kHeavilyFolded of the faces are folded): the rule leaves them as they were.
 TEST(FeaturePreservingDenoise, SmoothingOfACorpusMeshMovesItLessThanTheNoise) {
   for (const char* name : {"fandisk", "cow", "elephant"}) {
     const test::ArrayMesh m = test::load_data_mesh(name);
@@ -408,7 +445,11 @@ TEST(FeaturePreservingDenoise, SmoothingOfACorpusMeshMovesItLessThanTheNoise) {
       DenoiseReport report;
       denoise(noisy, m.faces, {}, &report);
       EXPECT_GT(report.smoothing_move, 0.5) << name << " " << percent;
-      EXPECT_LT(report.smoothing_move, kDistortingMove) << name << " " << percent;
+      EXPECT_LT(report.smoothing_move, kDistortingMoveHigh) << name << " " << percent;
+      if (report.folded_faces < kHeavilyFolded * m.faces.rows()) {
+        EXPECT_LT(report.smoothing_move, kDistortingMoveLow) << name << " " << percent;
+      }
+      EXPECT_EQ(report.distort_weight, 0.0) << name << " " << percent;
       EXPECT_FALSE(report.smoothing_distorts) << name << " " << percent;
     }
   }
