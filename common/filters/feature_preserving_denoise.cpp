@@ -384,8 +384,9 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
     // itself is read so.
     const bool try_refinement = may_smooth && refinement_on && !uncertain && sigma >= kCreaseRevealNoise;
     if (!may_smooth || try_refinement || uncertain) near_creases = faces_near_creases(angles, faces, smoothed.rows(), kCreaseDihedral);
-    Positions refined = start;
+    Positions refined;  // tried or blended
     if (try_refinement || uncertain) {
+      refined = start;
       DenoiseOptions trial = options;
       trial.refine_fit_each_pass = options.refine_fit_each_pass && uncertain;
       DenoiseReport trial_report;  // the trial's rounds are not the result's
