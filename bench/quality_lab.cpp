@@ -1263,19 +1263,6 @@ int main(int argc, char** argv) {
     std::string err;
     DenoiseOptions o;
     Positions out;
-    if (std::getenv("LAB_DISTORTBLEND")) {  // experiment: item 17's two outcomes and their blends
-      DenoiseOptions a = o, b = o;
-      a.distorting_move_low = a.distorting_move_high = 0;
-      b.refine_where_smoothing_distorts = false;
-      Positions pa, pb;
-      DenoiseReport ra, rb;
-      feature_preserving_denoise(noisy, f, a, pa, ra, err);
-      feature_preserving_denoise(noisy, f, b, pb, rb, err);
-      std::printf("  distort move %.3f\n", ra.smoothing_move);
-      show("item 17 refined from the input", pa);
-      show("item 17 routed as usual", pb);
-      for (double w : {0.25, 0.5, 0.75}) { char nm[40]; std::snprintf(nm, sizeof nm, "item 17 blend %.2f of the input's", w); show(nm, Positions(w * pa + (1 - w) * pb)); }
-    }
     DenoiseReport r;
     if (!feature_preserving_denoise(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); return 1; }
     const double edge = mean_edge_length(noisy, f);
@@ -1707,19 +1694,6 @@ int main(int argc, char** argv) {
     std::string err;
     DenoiseOptions o;
     Positions out;
-    if (std::getenv("LAB_DISTORTBLEND")) {  // experiment: item 17's two outcomes and their blends
-      DenoiseOptions a = o, b = o;
-      a.distorting_move_low = a.distorting_move_high = 0;
-      b.refine_where_smoothing_distorts = false;
-      Positions pa, pb;
-      DenoiseReport ra, rb;
-      feature_preserving_denoise(noisy, f, a, pa, ra, err);
-      feature_preserving_denoise(noisy, f, b, pb, rb, err);
-      std::printf("  distort move %.3f\n", ra.smoothing_move);
-      show("item 17 refined from the input", pa);
-      show("item 17 routed as usual", pb);
-      for (double w : {0.25, 0.5, 0.75}) { char nm[40]; std::snprintf(nm, sizeof nm, "item 17 blend %.2f of the input's", w); show(nm, Positions(w * pa + (1 - w) * pb)); }
-    }
     DenoiseReport r;
     if (!feature_preserving_denoise(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); return 1; }
     const double sigma = r.sigma_used;
