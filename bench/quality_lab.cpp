@@ -1270,7 +1270,7 @@ int main(int argc, char** argv) {
     const double pred_true = predicted_noise_angle_degrees(clean, f, level * h);
     const double change = mean_face_normal_error_degrees(out, noisy, f);
     std::printf("  sigma %.3f (s%d)  predicted tilt: from estimate %.2f, true %.2f | noisy E_a %.2f | change %.2f  ratio %.2f\n", r.sigma_used,
-                int(r.smoothed_instead), pred_est, pred_true, mean_face_normal_error_degrees(noisy, clean, f), change, change / std::max(1e-9, pred_est));
+                int(r.smoothed_instead()), pred_est, pred_true, mean_face_normal_error_degrees(noisy, clean, f), change, change / std::max(1e-9, pred_est));
     show("denoise", out);
     for (double kappa : {1.0, 1.25, 1.5, 2.0}) {
       double lo = 0, hi = 1;
@@ -1777,7 +1777,7 @@ int main(int argc, char** argv) {
     int refine_every = 1;
     for (const auto& d : risks.per_draw) refine_every &= d[1] < d[0];
     std::printf("RT noisy %.2f/%.1f shipped(s%d c%.2f) %.2f/%.1f smooth %.2f/%.1f refine %.2f/%.1f risk s %.5g r %.5g ratio %.4f every %d share %.2f truth %s pick %s\n",
-                sn.ea, sn.rms, int(r.smoothed_instead), r.crease_contrast, sd.ea, sd.rms, ss.ea, ss.rms, sr.ea, sr.rms, m[0], m[1], m[1] / m[0], refine_every,
+                sn.ea, sn.rms, int(r.smoothed_instead()), r.crease_contrast, sd.ea, sd.rms, ss.ea, ss.rms, sr.ea, sr.rms, m[0], m[1], m[1] / m[0], refine_every,
                 shape.tangential_share, sr.ea < ss.ea ? "refine" : "smooth", m[1] < m[0] ? "refine" : "smooth");
     return 0;
   }
@@ -1826,14 +1826,14 @@ int main(int argc, char** argv) {
     DenoiseReport r;
     if (!feature_preserving_denoise(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); return 1; }
     char name[80];
-    std::snprintf(name, sizeof name, "denoise (u%d s%d w%.2f f%d sig %.3f r%d p%d fl%.4f sc%.2f cr%d %.1f)", int(r.untangled), int(r.smoothed_instead), r.smoothing_weight, int(r.flat_parts_refined),
+    std::snprintf(name, sizeof name, "denoise (u%d s%d w%.2f f%d sig %.3f r%d p%d fl%.4f sc%.2f cr%d %.1f)", int(r.untangled), int(r.smoothed_instead()), r.smoothing_weight, int(r.flat_parts_refined),
                   r.sigma_used, r.refine_rounds, r.refine_normal_passes, double(r.flipped_faces) / f.rows(), r.refine_scaled, int(r.creases_revealed),
                   r.refined_crease_contrast);
     show(name, out);
     const std::vector<unsigned char> folded_out = folded_faces(out, f);
     const int out_folded = static_cast<int>(std::count(folded_out.begin(), folded_out.end(), 1));
     std::printf("  item 17: smoothing move %.3f noise RMS, folded %.4f, distorts %d; result folded %.4f\n", r.smoothing_move,
-                double(r.folded_faces) / f.rows(), int(r.smoothing_distorts), double(out_folded) / f.rows());
+                double(r.folded_faces) / f.rows(), int(r.smoothing_distorts()), double(out_folded) / f.rows());
     {  // how white the removed part is: its correlation across edges (normal part, and 3D)
       const VertexAdjacency adj = vertex_adjacency(f, n);
       const Positions nn = area_weighted_vertex_normals(out, f);

@@ -213,7 +213,7 @@ bool apply(FilterRun& run) {
                 .arg(report.smoothing_move, 0, 'f', 2).arg(100.0 * report.folded_faces / faces.rows(), 0, 'f', 1)
                 .arg(hht::kDistortingMoveLow).arg(hht::kDistortingMoveHigh)
                 .arg(100 * report.distort_weight, 0, 'f', 0).arg(100 * (1 - report.distort_weight), 0, 'f', 0));
-  if (report.smoothing_distorts)
+  if (report.smoothing_distorts())
     run.log(QString("  that smoothing moved the mesh by %1 times the noise's RMS with %2% of its faces folded: it "
                     "distorts features a few edges wide (a coarse CAD export); refined from the input, not smoothed")
                 .arg(report.smoothing_move, 0, 'f', 2).arg(100.0 * report.folded_faces / faces.rows(), 0, 'f', 1));
@@ -228,10 +228,10 @@ bool apply(FilterRun& run) {
                     "(below %3 and %4: no sharp creases; a contrast from %3 to %5 is uncertain)%6")
                 .arg(report.crease_contrast, 0, 'f', 1).arg(report.crease_lines, 0, 'f', 1)
                 .arg(hht::kNoCreaseContrast).arg(hht::kCreaseLines).arg(hht::kCreaseContrast)
-                .arg(!report.smoothed_instead ? ""
+                .arg(!report.smoothed_instead() ? ""
                      : report.smoothing.cutoff_by_risk ? "; the result is the adaptive smoothing (cut-off by Stein's unbiased risk with the given noise)"
                                    : "; the result is the adaptive smoothing (cross-validated cut-off)"));
-  const bool blended = report.smoothing_weight > 0 && !report.smoothed_instead;
+  const bool blended = report.smoothing_weight > 0 && !report.smoothed_instead();
   if (report.refined_crease_contrast > 0 && report.crease_contrast >= hht::kNoCreaseContrast)
     run.log(QString("  uncertain creases: the refinement reads a crease contrast of %1 (%2 %3: %4)")
                 .arg(report.refined_crease_contrast, 0, 'f', 1)
@@ -252,11 +252,11 @@ bool apply(FilterRun& run) {
   if (report.flat_parts_refined)
     run.log("  no sharp creases read for certain, but the mesh has exactly flat parts (its noise estimate was capped by them): "
             "a CAD part, refined all the same");
-  if (report.smoothed_instead || blended) {
+  if (report.smoothed_instead() || blended) {
     if (const QString line = tangential_share_line(report.smoothing.tangential_share); !line.isEmpty()) run.log(line);
     run.log(smoothing_finish_line(report.smoothing));
   }
-  if (report.smoothed_instead) {
+  if (report.smoothed_instead()) {
     run.log("  no refinement (the surface has no sharp creases)");
   } else if (report.refine_normal_passes > 0 && o.refine_vertex_iterations > 0) {
     const int own_rounds = report.refine_own_normal_rounds, guided_rounds = report.refine_rounds - own_rounds;

@@ -354,9 +354,8 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
                                                                                : (report.smoothing_move - low) / (high - low);
     if (distort_weight > 0 && distort_weight < 1)  // uncertain: both results, blended (item 33)
       return blend_distorting_routes(positions, faces, options, distort_weight, result, report, error, progress);
-    report.smoothing_distorts = distort_weight == 1;
     report.distort_weight = distort_weight;
-    report.untangled = options.untangle && !report.smoothing_distorts &&
+    report.untangled = options.untangle && !report.smoothing_distorts() &&
                        report.flipped_faces > kTangledShare * static_cast<double>(faces.rows());
     if (report.untangled) start = smoothed;
     clock.done("untangling");
@@ -369,7 +368,7 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
     report.crease_lines = readings.lines;
     const bool creases = report.crease_contrast >= options.crease_contrast || report.crease_lines >= kCreaseLines;
     report.flat_parts_refined = !creases && options.refine_flat_parts && report.noise.capped() && !report.untangled;
-    const bool may_smooth = route && !creases && !report.flat_parts_refined && !report.smoothing_distorts;
+    const bool may_smooth = route && !creases && !report.flat_parts_refined && !report.smoothing_distorts();
     const bool refinement_on = options.refine_normal_passes > 0 && options.refine_vertex_iterations > 0;
     // Between no_crease_contrast and crease_contrast the reading is uncertain (organic meshes with
     // sharp details and CAD parts with soft creases read there, and one mesh reads on both sides of
@@ -387,11 +386,11 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
     Positions refined;  // tried or blended
     if (try_refinement || uncertain) {
       refined = start;
-      DenoiseOptions trial = options;
-      trial.refine_fit_each_pass = options.refine_fit_each_pass && uncertain;
+      DenoiseOptions refinement = options;  // the trial fits the vertices once a round
+      refinement.refine_fit_each_pass = options.refine_fit_each_pass && uncertain;
       DenoiseReport trial_report;  // the trial's rounds are not the result's
       trial_report.untangled = report.untangled;
-      if (!refine(faces, trial, sigma, edge, near_creases, refined, uncertain ? report : trial_report, step, 30, 50, error))
+      if (!refine(faces, refinement, sigma, edge, near_creases, refined, uncertain ? report : trial_report, step, 30, 50, error))
         return false;
       clock.done(uncertain ? "refinement" : "refinement tried");
       report.refined_crease_contrast = crease_contrast(refined, faces);
@@ -410,14 +409,10 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
         return false;
       report.smoothing = smoothing_report;
       clock.done("adaptive smoothing");
-      if (uncertain) {
-        report.smoothing_weight = (options.crease_contrast - report.crease_contrast) /
-                                  (options.crease_contrast - options.no_crease_contrast);
-        result = report.smoothing_weight * result + (1 - report.smoothing_weight) * refined;
-      } else {
-        report.smoothing_weight = 1;
-        report.smoothed_instead = true;
-      }
+      report.smoothing_weight = !uncertain ? 1.0
+                                           : (options.crease_contrast - report.crease_contrast) /
+                                                 (options.crease_contrast - options.no_crease_contrast);
+      if (uncertain) result = report.smoothing_weight * result + (1 - report.smoothing_weight) * refined;
       if (options.detect_features && options.show_features && !detect_features(99)) return false;
       step(100, "Done");
       return true;

@@ -199,18 +199,19 @@ struct DenoiseReport {
   double crease_contrast = 0;  // of that smoothing (0: not measured)
   double crease_lines = 0;     // its crease lines' length (crease_contrast.h; 0: not measured)
   bool noise_free = false;     // the estimate read less than kNoiseFree: the result is the input
-  bool smoothed_instead = false;  // no sharp creases: the result is the adaptive smoothing
-  double smoothing_weight = 0;    // the adaptive smoothing's share of the result: 1 when smoothed_instead,
-                                  // between 0 and 1 when blended with the refinement (uncertain creases)
+  double smoothing_weight = 0;  // the adaptive smoothing's share of the result: 1 when smoothed_instead(),
+                                // between 0 and 1 when blended with the refinement (uncertain creases)
+  bool smoothed_instead() const { return smoothing_weight == 1; }  // no sharp creases: the result is the adaptive smoothing
   double refined_crease_contrast = 0;  // the crease contrast of the refinement tried (no sharp creases read,
                                        // at kCreaseRevealNoise or more) or blended (uncertain creases); 0: none
   bool creases_revealed = false;  // ... at least kRevealedCreaseContrast: the refinement alone is the result
-  NoiseAdaptiveSmoothingReport smoothing;  // when smoothed_instead: that smoothing's report
+  NoiseAdaptiveSmoothingReport smoothing;  // when smoothing_weight > 0: that smoothing's report
   bool flat_parts_refined = false;  // no sharp creases read, but flat parts: refined all the same
-  bool smoothing_distorts = false;  // the noise-level smoothing moved the mesh beyond the noise: refined from the input
-  double distort_weight = 0;  // the refinement from the input's share of the result: 1 when smoothing_distorts, between
-                              // 0 and 1 when blended with the usual route (an uncertain move, item 33; the rest of
-                              // the report is that route's)
+  double distort_weight = 0;  // the refinement from the input's share of the result: 1 when smoothing_distorts(),
+                              // between 0 and 1 when blended with the usual route (an uncertain move, item 33; the
+                              // rest of the report is that route's)
+  // The noise-level smoothing moved the mesh beyond the noise: refined from the input.
+  bool smoothing_distorts() const { return distort_weight == 1; }
   int refine_rounds_asked = 0;   // given, or set by the noise
   int refine_rounds = 0;         // done
   std::vector<double> refine_steps;  // with rounds set by the noise: the move of each round after the

@@ -482,7 +482,7 @@ TEST(MeshlabserverParameters, DenoiseSmoothsSurfacesWithoutCreases) {
     DenoiseReport report;
     std::string error;
     ASSERT_TRUE(feature_preserving_denoise(noisy, in.faces, o, expected, report, error)) << error;
-    EXPECT_EQ(report.smoothed_instead, smooth);
+    EXPECT_EQ(report.smoothed_instead(), smooth);
     const ServerRun run = run_resource(input, "denoise.mlx", {{"smoothCreaseless", smooth ? "true" : "false"}},
                                        smooth ? "denoise_creaseless" : "denoise_forced_refinement");
     expect_positions(saved_positions(run), expected, in.diagonal, smooth ? "smoothed" : "refined");
@@ -512,7 +512,7 @@ TEST(MeshlabserverParameters, DenoiseRefinesAFinelyMeshedPart) {
   std::string error;
   ASSERT_TRUE(feature_preserving_denoise(noisy, cube.faces, DenoiseOptions{}, expected, report, error)) << error;
   ASSERT_LT(report.crease_contrast, kNoCreaseContrast);
-  ASSERT_FALSE(report.smoothed_instead);
+  ASSERT_FALSE(report.smoothed_instead());
   const ServerRun run = run_resource(input, "denoise.mlx", {}, "denoise_finely_meshed_part");
   const double diagonal = (noisy.colwise().maxCoeff() - noisy.colwise().minCoeff()).norm();
   expect_positions(saved_positions(run), expected, diagonal, "refined");
@@ -543,7 +543,7 @@ void denoise_noisy(const char* mesh, double percent, NoiseDirection direction, c
 TEST(MeshlabserverParameters, DenoiseRefinesADistortedCoarseExportFromItsInput) {
   DenoisedInput d;
   ASSERT_NO_FATAL_FAILURE(denoise_noisy("rotor", 5.0, NoiseDirection::Normal, {}, d));
-  EXPECT_TRUE(d.report.smoothing_distorts);
+  EXPECT_TRUE(d.report.smoothing_distorts());
   EXPECT_FALSE(d.report.untangled);
   const ServerRun run = run_resource(d.path, "denoise.mlx", {}, "denoise_distorted");
   expect_positions(saved_positions(run), d.expected, d.in.diagonal, "distorted");
@@ -609,7 +609,7 @@ TEST(MeshlabserverParameters, DenoiseWithAGivenNoiseChoosesTheCutoffByUnbiasedRi
   o.noise = f(2) / 100.0;
   DenoisedInput d;
   ASSERT_NO_FATAL_FAILURE(denoise_noisy("bull", 2.0, NoiseDirection::Isotropic, o, d));
-  EXPECT_TRUE(d.report.smoothed_instead);
+  EXPECT_TRUE(d.report.smoothed_instead());
   EXPECT_TRUE(d.report.smoothing.cutoff_by_risk);
   const ServerRun run = run_resource(d.path, "denoise.mlx", {{"noisePercent", "2"}}, "denoise_given_noise");
   expect_positions(saved_positions(run), d.expected, d.in.diagonal, "given noise");

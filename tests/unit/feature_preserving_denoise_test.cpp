@@ -76,7 +76,7 @@ TEST(FeaturePreservingDenoise, FeaturesAreDetectedOnlyWhenUsedOrShown) {
     EXPECT_EQ(quiet.feature_vertices, 0);
     EXPECT_TRUE(shown.features_detected);
     EXPECT_GT(shown.feature_vertices, 0);
-    EXPECT_EQ(quiet.smoothed_instead, m == &elephant);
+    EXPECT_EQ(quiet.smoothed_instead(), m == &elephant);
     EXPECT_EQ(plain, with_features);
   }
 }
@@ -166,7 +166,7 @@ TEST(FeaturePreservingDenoise, HeavyNoiseFitsTheVerticesAfterEveryPass) {
     DenoiseReport report, once_report;
     const double ours = mean_face_normal_error_degrees(denoise(noisy, m.faces, {}, &report), m.positions, m.faces);
     const double fit_once = mean_face_normal_error_degrees(denoise(noisy, m.faces, once, &once_report), m.positions, m.faces);
-    ASSERT_FALSE(report.smoothed_instead) << name;
+    ASSERT_FALSE(report.smoothed_instead()) << name;
     EXPECT_EQ(report.sigma_used < kNoisePerRound, percent < 10) << name;
     EXPECT_TRUE(report.sigma_used >= kNoisePerRound || report.untangled) << name;
     EXPECT_TRUE(report.refine_fit_each_pass) << name;
@@ -193,7 +193,7 @@ TEST(FeaturePreservingDenoise, ARoundWithinTheNoisesUnroundedCountIsKept) {
   given.noise = 0.13;
   DenoiseReport report;
   const double ours = mean_face_normal_error_degrees(denoise(noisy, m.faces, given, &report), m.positions, m.faces);
-  ASSERT_FALSE(report.smoothed_instead);
+  ASSERT_FALSE(report.smoothed_instead());
   EXPECT_EQ(report.refine_rounds_asked, 1);
   ASSERT_FALSE(report.refine_steps.empty());
   EXPECT_GT(report.refine_steps[0], kRoundConvergedStep);
@@ -260,7 +260,7 @@ TEST(FeaturePreservingDenoise, LastRoundOnTheFacesOwnNormals) {
     DenoiseReport report, guided_report;
     const double ours = mean_face_normal_error_degrees(denoise(noisy, m.faces, {}, &report), m.positions, m.faces);
     const double all_guided = mean_face_normal_error_degrees(denoise(noisy, m.faces, guided, &guided_report), m.positions, m.faces);
-    ASSERT_FALSE(report.smoothed_instead) << name;
+    ASSERT_FALSE(report.smoothed_instead()) << name;
     EXPECT_EQ(report.refine_rounds_asked, 1) << name;  // (a converging round may follow it: own normals too)
     EXPECT_EQ(report.refine_own_normal_rounds, report.refine_rounds) << name;
     EXPECT_EQ(guided_report.refine_own_normal_rounds, 0) << name;
@@ -300,7 +300,7 @@ TEST(FeaturePreservingDenoise, RefinementStopsAtARoundThatDrifts) {
   guided.refine_fit_each_pass = false;
   DenoiseReport report;
   const double ruled = mean_face_normal_error_degrees(denoise(noisy, m.faces, guided, &report), m.positions, m.faces);
-  ASSERT_FALSE(report.smoothed_instead);
+  ASSERT_FALSE(report.smoothed_instead());
   ASSERT_GE(report.refine_rounds_asked, 2);
   EXPECT_LT(report.refine_rounds, report.refine_rounds_asked);
   ASSERT_EQ(report.refine_steps.size(), static_cast<size_t>(report.refine_rounds));
@@ -351,8 +351,8 @@ TEST(FeaturePreservingDenoise, MeshWithFlatPartsKeepsTheRefinement) {
   EXPECT_TRUE(with.noise.capped());
   EXPECT_LT(with.crease_contrast, kNoCreaseContrast);
   EXPECT_TRUE(with.flat_parts_refined);
-  EXPECT_FALSE(with.smoothed_instead);
-  EXPECT_TRUE(without.smoothed_instead);
+  EXPECT_FALSE(with.smoothed_instead());
+  EXPECT_TRUE(without.smoothed_instead());
   const double e_refined = mean_face_normal_error_degrees(refined, m.positions, m.faces);
   const double e_smoothed = mean_face_normal_error_degrees(smoothed, m.positions, m.faces);
   EXPECT_LT(e_refined, 0.8 * e_smoothed);
@@ -377,9 +377,9 @@ TEST(FeaturePreservingDenoise, CoarseCadExportIsRefinedFromItsInput) {
   EXPECT_GE(with.smoothing_move, kDistortingMoveHigh);
   EXPECT_LT(with.folded_faces, kHeavilyFolded * m.faces.rows());
   EXPECT_EQ(with.distort_weight, 1.0);
-  EXPECT_TRUE(with.smoothing_distorts);
+  EXPECT_TRUE(with.smoothing_distorts());
   EXPECT_FALSE(with.untangled);
-  EXPECT_FALSE(with.smoothed_instead);
+  EXPECT_FALSE(with.smoothed_instead());
   EXPECT_TRUE(without.untangled);
   EXPECT_LT(e_with, 0.6 * mean_face_normal_error_degrees(noisy, m.positions, m.faces));
   EXPECT_LT(e_with, 0.6 * e_without);
@@ -403,7 +403,7 @@ TEST(FeaturePreservingDenoise, AnUncertainMoveBlendsBothRoutes) {
   EXPECT_NEAR(w, (report.smoothing_move - kDistortingMoveLow) / (kDistortingMoveHigh - kDistortingMoveLow), 1e-12);
   ASSERT_GT(w, 0.05);
   ASSERT_LT(w, 0.95);
-  EXPECT_FALSE(report.smoothing_distorts);
+  EXPECT_FALSE(report.smoothing_distorts());
 
   DenoiseOptions from_input, routed, threshold;
   from_input.distorting_move_low = from_input.distorting_move_high = 0;
@@ -411,7 +411,7 @@ TEST(FeaturePreservingDenoise, AnUncertainMoveBlendsBothRoutes) {
   threshold.distorting_move_low = threshold.distorting_move_high = 1;  // the rule before item 33
   DenoiseReport from_input_report;
   const Positions refined = denoise(noisy, m.faces, from_input, &from_input_report);
-  EXPECT_TRUE(from_input_report.smoothing_distorts);
+  EXPECT_TRUE(from_input_report.smoothing_distorts());
   const Positions usual = denoise(noisy, m.faces, routed);
   const double diagonal = (m.positions.colwise().maxCoeff() - m.positions.colwise().minCoeff()).norm();
   EXPECT_LT((blended - (w * refined + (1 - w) * usual)).cwiseAbs().maxCoeff(), 1e-9 * diagonal);
@@ -428,7 +428,7 @@ TEST(FeaturePreservingDenoise, HeavilyFoldedCoarseExportIsStillUntangled) {
   const double e = mean_face_normal_error_degrees(denoise(noisy, m.faces, {}, &report), m.positions, m.faces);
   EXPECT_GT(report.smoothing_move, kDistortingMoveHigh);
   EXPECT_GE(report.folded_faces, kHeavilyFolded * m.faces.rows());
-  EXPECT_FALSE(report.smoothing_distorts);
+  EXPECT_FALSE(report.smoothing_distorts());
   EXPECT_EQ(report.distort_weight, 0.0);
   EXPECT_TRUE(report.untangled);
   EXPECT_LT(e, 0.7 * mean_face_normal_error_degrees(noisy, m.positions, m.faces));
@@ -450,7 +450,7 @@ TEST(FeaturePreservingDenoise, SmoothingOfACorpusMeshMovesItLessThanTheNoise) {
         EXPECT_LT(report.smoothing_move, kDistortingMoveLow) << name << " " << percent;
       }
       EXPECT_EQ(report.distort_weight, 0.0) << name << " " << percent;
-      EXPECT_FALSE(report.smoothing_distorts) << name << " " << percent;
+      EXPECT_FALSE(report.smoothing_distorts()) << name << " " << percent;
     }
   }
 }
@@ -495,7 +495,7 @@ TEST(FeaturePreservingDenoise, UntanglingStartsFromTheSecondOrderSmoothing) {
   DenoiseReport report;
   const Positions start = denoise(noisy, m.faces, o, &report);
   ASSERT_TRUE(report.untangled);
-  ASSERT_FALSE(report.smoothed_instead);
+  ASSERT_FALSE(report.smoothed_instead());
   auto smoothing = [&](double first_order, double mu_scale) {
     NoiseAdaptiveSmoothingOptions s;
     s.noise = report.sigma_used;
@@ -649,13 +649,13 @@ TEST(FeaturePreservingDenoise, SurfacesWithoutCreasesAreSmoothedNotRefined) {
     const Positions noisy = add_gaussian_noise(m.positions, m.faces, 20, NoiseDirection::Isotropic, 17);
     DenoiseReport report;
     const Positions routed = denoise(noisy, m.faces, {}, &report);
-    EXPECT_TRUE(report.smoothed_instead) << name;
+    EXPECT_TRUE(report.smoothed_instead()) << name;
     EXPECT_LT(report.crease_contrast, kNoCreaseContrast) << name;
     EXPECT_GT(report.crease_contrast, 1.0) << name;
     DenoiseOptions forced;
     forced.smooth_surfaces_by_smoothing = false;
     const Positions refined = denoise(noisy, m.faces, forced, &report);
-    EXPECT_FALSE(report.smoothed_instead);
+    EXPECT_FALSE(report.smoothed_instead());
     const double routed_error = mean_face_normal_error_degrees(routed, m.positions, m.faces);
     EXPECT_LT(routed_error, 0.8 * mean_face_normal_error_degrees(refined, m.positions, m.faces)) << name;
     EXPECT_LT(routed_error, 0.5 * mean_face_normal_error_degrees(noisy, m.positions, m.faces)) << name;
@@ -664,7 +664,7 @@ TEST(FeaturePreservingDenoise, SurfacesWithoutCreasesAreSmoothedNotRefined) {
   const Positions noisy = add_gaussian_noise(fandisk.positions, fandisk.faces, 20, NoiseDirection::Isotropic, 17);
   DenoiseReport report;
   denoise(noisy, fandisk.faces, {}, &report);
-  EXPECT_FALSE(report.smoothed_instead);
+  EXPECT_FALSE(report.smoothed_instead());
   EXPECT_GT(report.crease_contrast, kCreaseContrast);
   EXPECT_GE(report.refine_rounds, 1);
 }
@@ -683,7 +683,7 @@ TEST(FeaturePreservingDenoise, HeavyNoiseRefinesAPartWhoseSmoothingHidesItsCreas
   EXPECT_LT(report.crease_contrast, kNoCreaseContrast);
   EXPECT_LT(report.crease_lines, kCreaseLines);
   EXPECT_TRUE(report.creases_revealed);
-  EXPECT_FALSE(report.smoothed_instead);
+  EXPECT_FALSE(report.smoothed_instead());
   EXPECT_GE(report.refined_crease_contrast, kRevealedCreaseContrast);
   EXPECT_GE(report.refine_rounds, 2);
   DenoiseOptions refine_only;
@@ -696,7 +696,7 @@ TEST(FeaturePreservingDenoise, HeavyNoiseRefinesAPartWhoseSmoothingHidesItsCreas
   no_refinement.refine_normal_passes = 0;
   denoise(noisy, fandisk.faces, no_refinement, &report);
   EXPECT_EQ(report.refined_crease_contrast, 0);
-  EXPECT_TRUE(report.smoothed_instead);
+  EXPECT_TRUE(report.smoothed_instead());
 
   const test::ArrayMesh cow = test::load_data_mesh("cow");
   const Positions noisy_cow = add_gaussian_noise(cow.positions, cow.faces, 70, NoiseDirection::Isotropic, 17);
@@ -712,7 +712,7 @@ TEST(FeaturePreservingDenoise, HeavyNoiseRefinesAPartWhoseSmoothingHidesItsCreas
   EXPECT_GT(report.refined_crease_contrast, 0);
   EXPECT_LT(report.refined_crease_contrast, kRevealedCreaseContrast);
   EXPECT_FALSE(report.creases_revealed);
-  EXPECT_TRUE(report.smoothed_instead);
+  EXPECT_TRUE(report.smoothed_instead());
   EXPECT_EQ(report.refine_rounds, 0);  // the refinement tried is not reported as done
   const Positions refined = denoise(noisy_cow, cow.faces, refine_only, &report);
   EXPECT_LT(mean_face_normal_error_degrees(routed, cow.positions, cow.faces),
@@ -731,7 +731,7 @@ TEST(FeaturePreservingDenoise, UncertainCreasesBlendTheRefinementAndTheSmoothing
   const Positions blended = denoise(noisy, m.faces, {}, &report);
   EXPECT_GE(report.crease_contrast, kNoCreaseContrast);
   EXPECT_LT(report.crease_contrast, kCreaseContrast);
-  EXPECT_FALSE(report.smoothed_instead);
+  EXPECT_FALSE(report.smoothed_instead());
   EXPECT_FALSE(report.creases_revealed);
   EXPECT_GT(report.refined_crease_contrast, 0);
   EXPECT_GE(report.refine_rounds, 1);
@@ -762,7 +762,7 @@ TEST(FeaturePreservingDenoise, AFinelyMeshedPartIsRefined) {
   const Positions result = denoise(noisy, cube.faces, {}, &report);
   EXPECT_LT(report.crease_contrast, kNoCreaseContrast);
   EXPECT_GE(report.crease_lines, kCreaseLines);
-  EXPECT_FALSE(report.smoothed_instead);
+  EXPECT_FALSE(report.smoothed_instead());
   const double refined_error = mean_face_normal_error_degrees(result, cube.positions, cube.faces);
   const Positions smoothed = adaptive_smoothing(noisy, cube.faces, report.sigma_used);
   EXPECT_LT(refined_error, 0.3 * mean_face_normal_error_degrees(smoothed, cube.positions, cube.faces));
@@ -781,7 +781,7 @@ TEST(FeaturePreservingDenoise, AGivenLightNoiseOnAnOrganicMeshIsRemovedNotTheDet
     given.noise = 0.02;
     DenoiseReport report;
     const Positions out = denoise(noisy, m.faces, given, &report);
-    EXPECT_TRUE(report.smoothed_instead) << name;
+    EXPECT_TRUE(report.smoothed_instead()) << name;
     EXPECT_TRUE(report.smoothing.cutoff_by_risk) << name;
     EXPECT_LT(mean_face_normal_error_degrees(out, m.positions, m.faces),
               mean_face_normal_error_degrees(noisy, m.positions, m.faces)) << name;
