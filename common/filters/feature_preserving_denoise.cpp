@@ -18,6 +18,8 @@ namespace hht {
 
 namespace {
 
+using Step = std::function<void(int, const char*)>;  // progress: percent and stage
+
 // A low-pass filtered copy of a 1D signal, or nothing when EMD finds no IMF in it.
 bool low_pass(const std::vector<double>& signal, SignalBoundary boundary, const EmdOptions& base, double cutoff,
               std::vector<double>& out) {
@@ -52,7 +54,7 @@ std::vector<double> laplacian_smoothing(std::vector<double> s, bool closed, int 
 
 // The paper's sec. 4.3 on `positions` (features already in `report`), rebuilt into `result`.
 bool paper_stage(const Positions& positions, const Faces& faces, const DenoiseOptions& options, Positions& result,
-                 DenoiseReport& report, StageClock& clock, const std::function<void(int, const char*)>& step,
+                 DenoiseReport& report, StageClock& clock, const Step& step,
                  std::string& error) {
   const int n = static_cast<int>(positions.rows());
   std::vector<unsigned char> is_feature(n, 0);
@@ -142,16 +144,12 @@ bool paper_stage(const Positions& positions, const Faces& faces, const DenoiseOp
   return true;
 }
 
-}  // namespace
-
-namespace {
-
 // The refinement of `result` in place: guided normal filtering and vertex update in rounds (see
 // the header), progress from `from` to `to` percent. `near_creases` (of the noise-level smoothing;
 // empty: one range width) and report.untangled as the route found them.
 bool refine(const Faces& faces, const DenoiseOptions& options, double sigma, double edge,
             const std::vector<unsigned char>& near_creases, Positions& result, DenoiseReport& report,
-            const std::function<void(int, const char*)>& step, int from, int to, std::string& error) {
+            const Step& step, int from, int to, std::string& error) {
   // Below half a round's noise, one round with passes in proportion to the noise: light noise
   // (Fandisk at 5%) is still cleaned, a clean curved mesh is not faceted.
   int normal_passes = options.refine_normal_passes;
@@ -230,14 +228,127 @@ bool refine(const Faces& faces, const DenoiseOptions& options, double sigma, dou
   return true;
 }
 
-bool blend_distorting_routes(const Positions& positions, const Faces& faces, const DenoiseOptions& options, double weight,
-                             Positions& result, DenoiseReport& report, std::string& error, const Progress& progress);
+// The sharp features of `positions` into the report: for the paper's stage and for showing them;
+// nothing else needs them, and on a large mesh they cost as much as the smoothing
+// (docs/benchmarks.md).
+bool detect_features(const Positions& positions, const Faces& faces, const DenoiseOptions& options, DenoiseReport& report,
+                     StageClock& clock, const Step& step, int percent, std::string& error) {
+  step(percent, "Sharp feature detection");
+  if (!detect_sharp_features(positions, faces, options.features, report.type, error)) return false;
+  report.feature_lines = link_feature_lines(positions, faces, report.type);
+  report.feature_vertices =
+      static_cast<int>(std::count_if(report.type.begin(), report.type.end(), [](FeatureType t) { return t != FeatureType::None; }));
+  report.lines = static_cast<int>(report.feature_lines.lines.size());
+  report.corners = static_cast<int>(report.feature_lines.corners.size());
+  report.features_detected = true;
+  clock.done("features");
+  return true;
+}
+
+bool show_features_and_finish(const Positions& positions, const Faces& faces, const DenoiseOptions& options,
+                              DenoiseReport& report, StageClock& clock, const Step& step, std::string& error) {
+  if (options.detect_features && options.show_features && !detect_features(positions, faces, options, report, clock, step, 99, error))
+    return false;
+  step(100, "Done");
+  return true;
+}
+
+// `start` refined into `result`, after the paper's stage when asked for.
+bool refine_from(const Positions& positions, const Positions& start, const Faces& faces, const DenoiseOptions& options,
+                 double sigma, double edge, const std::vector<unsigned char>& near_creases, Positions& result,
+                 DenoiseReport& report, StageClock& clock, const Step& step, std::string& error) {
+  const int from = options.paper_stage ? 70 : report.creases_revealed ? 50 : 30;
+  if (options.detect_features && (options.paper_stage || options.show_features) &&
+      !detect_features(positions, faces, options, report, clock, step, report.creases_revealed ? 51 : 31, error))
+    return false;
+  result = start;
+  if (options.paper_stage && !paper_stage(start, faces, options, result, report, clock, step, error)) return false;
+  if (!refine(faces, options, sigma, edge, near_creases, result, report, step, from, 99, error)) return false;
+  if (report.refine_normal_passes > 0 && options.refine_vertex_iterations > 0) clock.done("refinement");
+  step(100, "Done");
+  return true;
+}
+
+// The routes after the untangling smoothing (`smoothed`, read into `report`) with `distort_weight`
+// 0 or 1 (item 17): by the smoothing's creases to the adaptive smoothing, the refinement or a blend
+// of both. Progress from 30 percent.
+bool denoise_after_untangling(const Positions& positions, const Faces& faces, const DenoiseOptions& options, double sigma,
+                              double edge, const Positions& smoothed, double distort_weight, Positions& result,
+                              DenoiseReport& report, const Step& step, std::string& error) {
+  StageClock clock(report.stages);
+  report.distort_weight = distort_weight;
+  report.untangled = options.untangle && !report.smoothing_distorts() &&
+                     report.flipped_faces > kTangledShare * static_cast<double>(faces.rows());
+  const Positions& start = report.untangled ? smoothed : positions;
+  // A surface without sharp creases (organic): the guided refinement, made for creases, would
+  // facet it; the adaptive smoothing with its cross-validated cut-off is the better result. Long
+  // crease lines are creases too, however few of the edges they hold (a finely meshed part).
+  const std::vector<DihedralAngle> angles = dihedral_angles(smoothed, faces);
+  const CreaseReadings readings = read_creases(angles);
+  report.crease_contrast = readings.contrast;
+  report.crease_lines = readings.lines;
+  const bool creases = report.crease_contrast >= options.crease_contrast || report.crease_lines >= kCreaseLines;
+  report.flat_parts_refined = !creases && options.refine_flat_parts && report.noise.capped() && !report.untangled;
+  const bool may_smooth = options.smooth_surfaces_by_smoothing && !options.paper_stage && !creases &&
+                          !report.flat_parts_refined && !report.smoothing_distorts();
+  const bool refinement_on = options.refine_normal_passes > 0 && options.refine_vertex_iterations > 0;
+  // Between no_crease_contrast and crease_contrast the reading is uncertain (organic meshes with
+  // sharp details and CAD parts with soft creases read there, and one mesh reads on both sides of
+  // a threshold from one noise draw to the next): the refinement and the smoothing are blended,
+  // the smoothing's share falling across the band, which beats either result alone on most such
+  // meshes (docs/quality.md item 32).
+  const bool uncertain = may_smooth && refinement_on && report.crease_contrast >= options.no_crease_contrast;
+  // Heavy noise flattens the creases of a flat-faced part's smoothing into the organic range: a
+  // refinement is tried, and where it brings back flat faces meeting at creases the surface is
+  // refined after all. The trial fits the vertices once a round, half the full refinement's
+  // time, and reads the same (docs/quality.md item 31). In the uncertain band the refinement
+  // itself is read so.
+  const bool try_refinement = may_smooth && refinement_on && !uncertain && sigma >= kCreaseRevealNoise;
+  std::vector<unsigned char> near_creases;  // of the noise-level smoothing, for the refinement's range widths
+  if (!may_smooth || try_refinement || uncertain) near_creases = faces_near_creases(angles, faces, smoothed.rows(), kCreaseDihedral);
+  Positions refined;  // tried or blended
+  if (try_refinement || uncertain) {
+    refined = start;
+    DenoiseOptions refinement = options;  // the trial fits the vertices once a round
+    refinement.refine_fit_each_pass = options.refine_fit_each_pass && uncertain;
+    DenoiseReport trial_report;  // the trial's rounds are not the result's
+    trial_report.untangled = report.untangled;
+    if (!refine(faces, refinement, sigma, edge, near_creases, refined, uncertain ? report : trial_report, step, 30, 50, error))
+      return false;
+    clock.done(uncertain ? "refinement" : "refinement tried");
+    report.refined_crease_contrast = crease_contrast(refined, faces);
+    report.creases_revealed = report.refined_crease_contrast >= kRevealedCreaseContrast;
+  }
+  if (may_smooth && !report.creases_revealed) {
+    const int from = try_refinement || uncertain ? 50 : 40;
+    step(from, "No sharp creases: adaptive smoothing");
+    NoiseAdaptiveSmoothingOptions smoothing;  // the adaptive smoothing's own filter
+    smoothing.keep_untouched = false;
+    smoothing.noise = sigma;
+    smoothing.unbiased_risk = options.noise > 0;  // the user's noise level: its cut-off by Stein's risk
+    if (!noise_adaptive_smooth(positions, faces, smoothing, result, report.smoothing, error, [&](int percent, const char*) {
+          step(from + (99 - from) * percent / 100, "No sharp creases: adaptive smoothing");
+        }))
+      return false;
+    clock.done("adaptive smoothing");
+    report.smoothing_weight = !uncertain ? 1.0
+                                         : (options.crease_contrast - report.crease_contrast) /
+                                               (options.crease_contrast - options.no_crease_contrast);
+    if (uncertain) result = report.smoothing_weight * result + (1 - report.smoothing_weight) * refined;
+    return show_features_and_finish(positions, faces, options, report, clock, step, error);
+  }
+  if (uncertain) {  // revealed: the refinement is the result
+    result.swap(refined);
+    return show_features_and_finish(positions, faces, options, report, clock, step, error);
+  }
+  return refine_from(positions, start, faces, options, sigma, edge, near_creases, result, report, clock, step, error);
+}
 
 // The denoiser over every vertex; feature_preserving_denoise then keeps those impulsive noise left alone.
 bool denoise_every_vertex(const Positions& positions, const Faces& faces, const DenoiseOptions& options,
                           Positions& result, DenoiseReport& report, std::string& error, const Progress& progress) {
   StageClock clock(report.stages);
-  auto step = [&](int percent, const char* what) {
+  const Step step = [&](int percent, const char* what) {
     if (progress) progress(percent, what);
   };
   if (!(options.refine_drift_step > 0) || !(options.refine_converged_step >= 0) ||
@@ -267,22 +378,7 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
     clock.done("noise estimate");
   }
   report.sigma_used = sigma;
-
-  // Features of the input, for the paper's stage and for showing them; nothing else needs them,
-  // and on a large mesh they cost as much as the smoothing (docs/benchmarks.md).
   report.type.assign(n, FeatureType::None);
-  auto detect_features = [&](int percent) {
-    step(percent, "Sharp feature detection");
-    if (!detect_sharp_features(positions, faces, options.features, report.type, error)) return false;
-    report.feature_lines = link_feature_lines(positions, faces, report.type);
-    report.feature_vertices =
-        static_cast<int>(std::count_if(report.type.begin(), report.type.end(), [](FeatureType t) { return t != FeatureType::None; }));
-    report.lines = static_cast<int>(report.feature_lines.lines.size());
-    report.corners = static_cast<int>(report.feature_lines.corners.size());
-    report.features_detected = true;
-    clock.done("features");
-    return true;
-  };
 
   // Impulsive noise read from scattered spikes: the spikes put back, every other vertex as it was
   // (too dense for that: denoised as any noise).
@@ -293,9 +389,7 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
     if (report.spike_removal.sparse) {
       result.swap(despiked);
       report.spikes_removed = true;
-      if (options.detect_features && options.show_features && !detect_features(99)) return false;
-      step(100, "Done");
-      return true;
+      return show_features_and_finish(positions, faces, options, report, clock, step, error);
     }
     // Too dense for the removal alone: what it left denoised as any noise (docs/quality.md items 26
     // and 27).
@@ -308,159 +402,73 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
   // No noise to remove: the input as it is (the paper's stage, when asked for, still runs).
   if (!(options.noise > 0) && sigma < kNoiseFree && !options.paper_stage) {
     report.noise_free = true;
-    if (options.detect_features && options.show_features && !detect_features(99)) return false;
     result = positions;
-    step(100, "Done");
-    return true;
+    return show_features_and_finish(positions, faces, options, report, clock, step, error);
   }
 
   const double edge = mean_edge_length(positions, faces);
-  Positions start = positions;
-  std::vector<unsigned char> near_creases;  // of the noise-level smoothing, for the refinement's range widths
-  const bool route = options.smooth_surfaces_by_smoothing && !options.paper_stage;
-  if (options.untangle || route) {
-    step(8, "Untangling: noise-adaptive smoothing");
-    NoiseAdaptiveSmoothingOptions smoothing;
-    smoothing.noise = sigma;
-    smoothing.select_cutoff = false;  // the noise level's cut-off: the refinement was measured from it
-    smoothing.unturn_wrinkles = false;  // the tangle test counts the faces this smoothing turns
-    smoothing.face_normal_pass = false;  // the refinement was measured from the smoothing without them
-    smoothing.taubin_slide = false;
-    smoothing.keep_untouched = false;  // feature_preserving_denoise keeps them at the end
-    smoothing.first_order = options.untangle_first_order;
-    smoothing.mu_scale = options.untangle_mu_scale;
-    NoiseAdaptiveSmoothingReport smoothing_report;
-    Positions smoothed;
-    if (!noise_adaptive_smooth(positions, faces, smoothing, smoothed, smoothing_report, error,
-                               [&](int percent, const char*) { step(8 + 22 * percent / 100, "Untangling: noise-adaptive smoothing"); }))
-      return false;
-    for (Eigen::Index f = 0; f < faces.rows(); ++f) {
-      const auto normal = [&](const Positions& p) {
-        const Eigen::RowVector3d a = p.row(faces(f, 0));
-        return Eigen::RowVector3d((p.row(faces(f, 1)) - a).cross(p.row(faces(f, 2)) - a));
-      };
-      report.flipped_faces += normal(positions).dot(normal(smoothed)) < 0;
-    }
-    // A smoothing that moves the mesh further than the noise did distorts it (item 17).
-    const double noise_rms = std::sqrt(3.0) * sigma * edge;
-    report.smoothing_move = noise_rms > 0 ? std::sqrt((smoothed - positions).rowwise().squaredNorm().mean()) / noise_rms : 0;
-    const std::vector<unsigned char> folded = folded_faces(positions, faces);
-    report.folded_faces = static_cast<int>(std::count(folded.begin(), folded.end(), 1));
-    const bool distort_rule =
-        options.refine_where_smoothing_distorts && report.folded_faces < kHeavilyFolded * static_cast<double>(faces.rows());
-    const double low = options.distorting_move_low, high = options.distorting_move_high;
-    const double distort_weight = !distort_rule || report.smoothing_move <= low ? 0.0
-                                  : report.smoothing_move >= high             ? 1.0
-                                                                               : (report.smoothing_move - low) / (high - low);
-    if (distort_weight > 0 && distort_weight < 1)  // uncertain: both results, blended (item 33)
-      return blend_distorting_routes(positions, faces, options, distort_weight, result, report, error, progress);
-    report.distort_weight = distort_weight;
-    report.untangled = options.untangle && !report.smoothing_distorts() &&
-                       report.flipped_faces > kTangledShare * static_cast<double>(faces.rows());
-    if (report.untangled) start = smoothed;
-    clock.done("untangling");
-    // A surface without sharp creases (organic): the guided refinement, made for creases, would
-    // facet it; the adaptive smoothing with its cross-validated cut-off is the better result. Long
-    // crease lines are creases too, however few of the edges they hold (a finely meshed part).
-    const std::vector<DihedralAngle> angles = dihedral_angles(smoothed, faces);
-    const CreaseReadings readings = read_creases(angles);
-    report.crease_contrast = readings.contrast;
-    report.crease_lines = readings.lines;
-    const bool creases = report.crease_contrast >= options.crease_contrast || report.crease_lines >= kCreaseLines;
-    report.flat_parts_refined = !creases && options.refine_flat_parts && report.noise.capped() && !report.untangled;
-    const bool may_smooth = route && !creases && !report.flat_parts_refined && !report.smoothing_distorts();
-    const bool refinement_on = options.refine_normal_passes > 0 && options.refine_vertex_iterations > 0;
-    // Between no_crease_contrast and crease_contrast the reading is uncertain (organic meshes with
-    // sharp details and CAD parts with soft creases read there, and one mesh reads on both sides of
-    // a threshold from one noise draw to the next): the refinement and the smoothing are blended,
-    // the smoothing's share falling across the band, which beats either result alone on most such
-    // meshes (docs/quality.md item 32).
-    const bool uncertain = may_smooth && refinement_on && report.crease_contrast >= options.no_crease_contrast;
-    // Heavy noise flattens the creases of a flat-faced part's smoothing into the organic range: a
-    // refinement is tried, and where it brings back flat faces meeting at creases the surface is
-    // refined after all. The trial fits the vertices once a round, half the full refinement's
-    // time, and reads the same (docs/quality.md item 31). In the uncertain band the refinement
-    // itself is read so.
-    const bool try_refinement = may_smooth && refinement_on && !uncertain && sigma >= kCreaseRevealNoise;
-    if (!may_smooth || try_refinement || uncertain) near_creases = faces_near_creases(angles, faces, smoothed.rows(), kCreaseDihedral);
-    Positions refined;  // tried or blended
-    if (try_refinement || uncertain) {
-      refined = start;
-      DenoiseOptions refinement = options;  // the trial fits the vertices once a round
-      refinement.refine_fit_each_pass = options.refine_fit_each_pass && uncertain;
-      DenoiseReport trial_report;  // the trial's rounds are not the result's
-      trial_report.untangled = report.untangled;
-      if (!refine(faces, refinement, sigma, edge, near_creases, refined, uncertain ? report : trial_report, step, 30, 50, error))
-        return false;
-      clock.done(uncertain ? "refinement" : "refinement tried");
-      report.refined_crease_contrast = crease_contrast(refined, faces);
-      report.creases_revealed = report.refined_crease_contrast >= kRevealedCreaseContrast;
-    }
-    if (may_smooth && !report.creases_revealed) {
-      const int from = try_refinement || uncertain ? 50 : 40;
-      step(from, "No sharp creases: adaptive smoothing");
-      smoothing = NoiseAdaptiveSmoothingOptions{};  // the adaptive smoothing's own filter
-      smoothing.keep_untouched = false;
-      smoothing.noise = sigma;
-      smoothing.unbiased_risk = options.noise > 0;  // the user's noise level: its cut-off by Stein's risk
-      if (!noise_adaptive_smooth(positions, faces, smoothing, result, smoothing_report, error, [&](int percent, const char*) {
-            step(from + (99 - from) * percent / 100, "No sharp creases: adaptive smoothing");
-          }))
-        return false;
-      report.smoothing = smoothing_report;
-      clock.done("adaptive smoothing");
-      report.smoothing_weight = !uncertain ? 1.0
-                                           : (options.crease_contrast - report.crease_contrast) /
-                                                 (options.crease_contrast - options.no_crease_contrast);
-      if (uncertain) result = report.smoothing_weight * result + (1 - report.smoothing_weight) * refined;
-      if (options.detect_features && options.show_features && !detect_features(99)) return false;
-      step(100, "Done");
-      return true;
-    }
-    if (uncertain) {  // revealed: the refinement is the result
-      result.swap(refined);
-      if (options.detect_features && options.show_features && !detect_features(99)) return false;
-      step(100, "Done");
-      return true;
-    }
-  }
+  if (!options.untangle && !(options.smooth_surfaces_by_smoothing && !options.paper_stage))
+    return refine_from(positions, positions, faces, options, sigma, edge, {}, result, report, clock, step, error);
 
-  const int from = options.paper_stage ? 70 : report.creases_revealed ? 50 : 30;
-  if (options.detect_features && (options.paper_stage || options.show_features) && !detect_features(report.creases_revealed ? 51 : 31))
+  step(8, "Untangling: noise-adaptive smoothing");
+  NoiseAdaptiveSmoothingOptions smoothing;
+  smoothing.noise = sigma;
+  smoothing.select_cutoff = false;  // the noise level's cut-off: the refinement was measured from it
+  smoothing.unturn_wrinkles = false;  // the tangle test counts the faces this smoothing turns
+  smoothing.face_normal_pass = false;  // the refinement was measured from the smoothing without them
+  smoothing.taubin_slide = false;
+  smoothing.keep_untouched = false;  // feature_preserving_denoise keeps them at the end
+  smoothing.first_order = options.untangle_first_order;
+  smoothing.mu_scale = options.untangle_mu_scale;
+  NoiseAdaptiveSmoothingReport smoothing_report;
+  Positions smoothed;
+  if (!noise_adaptive_smooth(positions, faces, smoothing, smoothed, smoothing_report, error,
+                             [&](int percent, const char*) { step(8 + 22 * percent / 100, "Untangling: noise-adaptive smoothing"); }))
     return false;
-  result = start;
-  if (options.paper_stage && !paper_stage(start, faces, options, result, report, clock, step, error)) return false;
+  for (Eigen::Index f = 0; f < faces.rows(); ++f) {
+    const auto normal = [&](const Positions& p) {
+      const Eigen::RowVector3d a = p.row(faces(f, 0));
+      return Eigen::RowVector3d((p.row(faces(f, 1)) - a).cross(p.row(faces(f, 2)) - a));
+    };
+    report.flipped_faces += normal(positions).dot(normal(smoothed)) < 0;
+  }
+  // A smoothing that moves the mesh further than the noise did distorts it (item 17).
+  const double noise_rms = std::sqrt(3.0) * sigma * edge;
+  report.smoothing_move = noise_rms > 0 ? std::sqrt((smoothed - positions).rowwise().squaredNorm().mean()) / noise_rms : 0;
+  const std::vector<unsigned char> folded = folded_faces(positions, faces);
+  report.folded_faces = static_cast<int>(std::count(folded.begin(), folded.end(), 1));
+  const bool distort_rule =
+      options.refine_where_smoothing_distorts && report.folded_faces < kHeavilyFolded * static_cast<double>(faces.rows());
+  const double low = options.distorting_move_low, high = options.distorting_move_high;
+  const double distort_weight = !distort_rule || report.smoothing_move <= low ? 0.0
+                                : report.smoothing_move >= high             ? 1.0
+                                                                             : (report.smoothing_move - low) / (high - low);
+  clock.done("untangling");
+  if (distort_weight == 0 || distort_weight == 1)
+    return denoise_after_untangling(positions, faces, options, sigma, edge, smoothed, distort_weight, result, report, step, error);
 
-  if (!refine(faces, options, sigma, edge, near_creases, result, report, step, from, 99, error)) return false;
-  if (report.refine_normal_passes > 0 && options.refine_vertex_iterations > 0) clock.done("refinement");
-  step(100, "Done");
-  return true;
-}
-
-// An uncertain move of the noise-level smoothing (item 33): the mesh denoised both ways, refined
-// from its input (item 17) and routed as usual, and the two blended with `weight` on the first.
-// The report is the usual route's.
-bool blend_distorting_routes(const Positions& positions, const Faces& faces, const DenoiseOptions& options, double weight,
-                             Positions& result, DenoiseReport& report, std::string& error, const Progress& progress) {
-  const auto part = [&](int from, int to) -> Progress {
-    if (!progress) return {};
-    return [&progress, from, to](int percent, const char* stage) { progress(from + (to - from) * percent / 100, stage); };
+  // An uncertain move (item 33): the mesh refined from its input (item 17) and routed as usual from
+  // the same readings, the two blended with distort_weight on the first. The report is the usual
+  // route's.
+  const auto part = [&](int from, int to) -> Step {
+    return [&step, from, to](int percent, const char* what) { step(from + (to - from) * (percent - 30) / 70, what); };
   };
-  DenoiseOptions from_input = options, routed = options;
-  from_input.distorting_move_low = from_input.distorting_move_high = 0;  // any move distorts
-  routed.refine_where_smoothing_distorts = false;
+  const auto seconds = [](const DenoiseReport& r) {
+    double sum = 0;
+    for (const StageTime& stage : r.stages) sum += stage.seconds;
+    return sum;
+  };
+  const double read = seconds(report);
+  DenoiseReport refined_report = report;
   Positions refined;
-  DenoiseReport refined_report;
-  if (!denoise_every_vertex(positions, faces, from_input, refined, refined_report, error, part(30, 60))) return false;
-  DenoiseReport routed_report;
-  if (!denoise_every_vertex(positions, faces, routed, result, routed_report, error, part(60, 99))) return false;
-  result = weight * refined + (1 - weight) * result;
-  report = std::move(routed_report);
-  report.distort_weight = weight;
-  double seconds = 0;
-  for (const StageTime& stage : refined_report.stages) seconds += stage.seconds;
-  report.stages.push_back({"refinement from the input (blended)", seconds});
-  if (progress) progress(100, "Done");
+  if (!denoise_after_untangling(positions, faces, options, sigma, edge, smoothed, 1.0, refined, refined_report, part(30, 60), error))
+    return false;
+  if (!denoise_after_untangling(positions, faces, options, sigma, edge, smoothed, 0.0, result, report, part(60, 99), error))
+    return false;
+  result = distort_weight * refined + (1 - distort_weight) * result;
+  report.distort_weight = distort_weight;
+  report.stages.push_back({"refinement from the input (blended)", seconds(refined_report) - read});
+  step(100, "Done");
   return true;
 }
 

@@ -419,6 +419,37 @@ TEST(FeaturePreservingDenoise, AnUncertainMoveBlendsBothRoutes) {
             mean_face_normal_error_degrees(denoise(noisy, m.faces, threshold), m.positions, m.faces) - 2);
 }
 
+// Both routes of the blend start from one reading of the input: the noise estimate and the
+// untangling smoothing run once (each route ran them again before, three times in all), and
+// MeshLab's progress bar goes through the two routes without going back.
+TEST(FeaturePreservingDenoise, AnUncertainMoveReadsTheInputOnce) {
+  const test::ArrayMesh m = test::load_data_mesh("handle");
+  const Positions noisy = add_gaussian_noise(m.positions, m.faces, 10, NoiseDirection::Normal, 1);
+  std::vector<std::pair<int, std::string>> calls;
+  Positions result;
+  DenoiseReport report;
+  std::string error;
+  ASSERT_TRUE(feature_preserving_denoise(noisy, m.faces, {}, result, report, error,
+                                         [&](int percent, const char* stage) { calls.emplace_back(percent, stage); }))
+      << error;
+  ASSERT_GT(report.distort_weight, 0.0);
+  ASSERT_LT(report.distort_weight, 1.0);
+  const auto starts = [&](const std::string& stage) {
+    int count = 0;
+    for (size_t i = 0; i < calls.size(); ++i) count += calls[i].second == stage && (i == 0 || calls[i - 1].second != stage);
+    return count;
+  };
+  EXPECT_EQ(starts("Noise estimate (finest IMF)"), 1);
+  EXPECT_EQ(starts("Untangling: noise-adaptive smoothing"), 1);
+  EXPECT_GE(starts("Refinement: guided normal filtering and vertex update"), 1);  // the route from the input
+  for (size_t i = 1; i < calls.size(); ++i) EXPECT_GE(calls[i].first, calls[i - 1].first) << calls[i].second;
+  EXPECT_EQ(calls.back().first, 100);
+  const auto blended = std::find_if(report.stages.begin(), report.stages.end(),
+                                    [](const StageTime& s) { return std::string(s.stage) == "refinement from the input (blended)"; });
+  ASSERT_NE(blended, report.stages.end());
+  EXPECT_GT(blended->seconds, 0.0);
+}
+
 // The same mesh at 20% isotropic noise has a fifth of its faces folded: only the smoothing
 // untangles them, distortion and all (32 degrees; refined from the input 58, the noisy input 60).
 TEST(FeaturePreservingDenoise, HeavilyFoldedCoarseExportIsStillUntangled) {
