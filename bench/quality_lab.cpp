@@ -469,6 +469,10 @@ int main(int argc, char** argv) {
     noisy = add_gaussian_noise(noisy, f, 50, NoiseDirection::Normal, 1000 + (std::getenv("LAB_SEED") ? std::atoi(std::getenv("LAB_SEED")) : 11),
                                std::atof(share));
   }
+  if (const char* file = std::getenv("LAB_NOISYFILE")) {  // a given noisy mesh of the same connectivity (e.g. a meshlabserver run's input)
+    Faces nf;
+    if (!bench::load_mesh(file, noisy, nf) || nf.rows() != f.rows() || noisy.rows() != n) return 1;
+  }
   if (std::getenv("LAB_GIVENLOG")) {  // the noise given as HHT: Add Gaussian Noise logs it: along the normals, in the noisy mesh's edge
     const std::string given = std::to_string(noise_along_normals(clean, noisy, f));
     setenv("LAB_GIVEN", given.c_str(), 1);
@@ -1801,6 +1805,7 @@ int main(int argc, char** argv) {
     if (std::getenv("LAB_NOFLAT")) o.refine_flat_parts = false;
     if (std::getenv("LAB_NODISTORT")) o.refine_where_smoothing_distorts = false;
     if (const char* band = std::getenv("LAB_DBAND")) std::sscanf(band, "%lf,%lf", &o.distorting_move_low, &o.distorting_move_high);
+    if (const char* band = std::getenv("LAB_FBAND")) std::sscanf(band, "%lf,%lf", &o.folded_low, &o.folded_high);
     if (const char* x = std::getenv("LAB_SIGMA")) o.noise = std::atof(x);  // given noise (sigma / mean edge)
     if (std::getenv("LAB_NOCAP")) {  // the finest IMF's estimate without the flat hinges' cap
       HamiltonianCycle cycle;
@@ -1813,6 +1818,7 @@ int main(int argc, char** argv) {
     if (std::getenv("LAB_DISTORTBLEND")) {  // experiment: item 17's two outcomes and their blends
       DenoiseOptions a = o, b = o;
       a.distorting_move_low = a.distorting_move_high = 0;
+      a.folded_low = a.folded_high = 2;  // whatever the folded share
       b.refine_where_smoothing_distorts = false;
       Positions pa, pb;
       DenoiseReport ra, rb;
@@ -1832,8 +1838,8 @@ int main(int argc, char** argv) {
     show(name, out);
     const std::vector<unsigned char> folded_out = folded_faces(out, f);
     const int out_folded = static_cast<int>(std::count(folded_out.begin(), folded_out.end(), 1));
-    std::printf("  item 17: smoothing move %.3f noise RMS, folded %.4f, distorts %d; result folded %.4f\n", r.smoothing_move,
-                double(r.folded_faces) / f.rows(), int(r.smoothing_distorts()), double(out_folded) / f.rows());
+    std::printf("  item 17: smoothing move %.3f noise RMS, folded %.4f, distorts %d (weight %.2f); result folded %.4f\n", r.smoothing_move,
+                double(r.folded_faces) / f.rows(), int(r.smoothing_distorts()), r.distort_weight, double(out_folded) / f.rows());
     {  // how white the removed part is: its correlation across edges (normal part, and 3D)
       const VertexAdjacency adj = vertex_adjacency(f, n);
       const Positions nn = area_weighted_vertex_normals(out, f);

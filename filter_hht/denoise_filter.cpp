@@ -34,12 +34,17 @@ void declare(const MeshDocument&, RichParameterList& p) {
                        "reads its own fine detail as up to 15% noise (the log says when an estimate is in that range): "
                        "to keep that detail on a mesh you know to be clean or nearly so, give a small value."));
   p.addParam(RichBool("untangle", d.untangle, "Untangle folded triangles first",
-                      "Noise with a tangential part (a scanner's) folds small triangles over, which no normal filter "
-                      "repairs. When more than 0.75% of the faces point away from those of the noise-adaptive "
-                      "smoothing (HHT: Adaptive Smooth), the denoiser starts from that smoothing; not when the "
-                      "smoothing moves the mesh further than the noise did and fewer than 10% of its faces are folded "
-                      "(a coarse CAD export, whose few-edge features it would flatten: refined from the input); a move "
-                      "of 0.9 to 1.1 times the noise's is uncertain, and the two results are blended."));
+                      QString("Noise with a tangential part (a scanner's) folds small triangles over, which no normal "
+                              "filter repairs. When more than 0.75% of the faces point away from those of the "
+                              "noise-adaptive smoothing (HHT: Adaptive Smooth), the denoiser starts from that smoothing; "
+                              "not when the smoothing moves the mesh further than the noise did and fewer than a tenth of its faces "
+                              "are folded (a coarse CAD export, whose few-edge features it would flatten: refined from the "
+                              "input); a move of %1 to %2 times the noise's, or %3% to %4% of the faces folded, is "
+                              "uncertain, and the two results are blended.")
+                          .arg(hht::kDistortingMoveLow)
+                          .arg(hht::kDistortingMoveHigh)
+                          .arg(100 * hht::kHeavilyFoldedLow)
+                          .arg(100 * hht::kHeavilyFoldedHigh)));
   p.addParam(RichBool("smoothCreaseless", d.smooth_surfaces_by_smoothing, "Smooth surfaces without sharp creases",
                       QString("When the smoothed mesh shows no sharp creases (the 98th percentile of its dihedral angles "
                               "under %1 times their median, and its edges over 12 times the median forming lines shorter "
@@ -208,10 +213,11 @@ bool apply(FilterRun& run) {
                 .arg(report.untangled ? "started from that smoothing" : "started from the input"));
   if (report.distort_weight > 0 && report.distort_weight < 1)
     run.log(QString("  that smoothing moved the mesh by %1 times the noise's RMS with %2% of its faces folded, an uncertain "
-                    "reading (from %3 to %4): the result is %5% the refinement from the input and %6% the usual route's "
-                    "below")
+                    "reading (a move from %3 to %4, or from %5% to %6% of the faces folded): the result is %7% the "
+                    "refinement from the input and %8% the usual route's below")
                 .arg(report.smoothing_move, 0, 'f', 2).arg(100.0 * report.folded_faces / faces.rows(), 0, 'f', 1)
                 .arg(hht::kDistortingMoveLow).arg(hht::kDistortingMoveHigh)
+                .arg(100 * hht::kHeavilyFoldedLow).arg(100 * hht::kHeavilyFoldedHigh)
                 .arg(100 * report.distort_weight, 0, 'f', 0).arg(100 * (1 - report.distort_weight), 0, 'f', 0));
   if (report.smoothing_distorts())
     run.log(QString("  that smoothing moved the mesh by %1 times the noise's RMS with %2% of its faces folded: it "

@@ -360,6 +360,10 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
     error = "distorting move band out of range: from 0 up to distorting_move_high";
     return false;
   }
+  if (!(options.folded_low >= 0 && options.folded_low <= options.folded_high)) {
+    error = "folded share band out of range: from 0 up to folded_high";
+    return false;
+  }
   if (!(options.no_crease_contrast >= 0 && options.no_crease_contrast <= options.crease_contrast && std::isfinite(options.crease_contrast))) {
     error = "crease contrast band out of range: from 0 up to crease_contrast";
     return false;
@@ -437,12 +441,15 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
   report.smoothing_move = noise_rms > 0 ? std::sqrt((smoothed - positions).rowwise().squaredNorm().mean()) / noise_rms : 0;
   const std::vector<unsigned char> folded = folded_faces(positions, faces);
   report.folded_faces = static_cast<int>(std::count(folded.begin(), folded.end(), 1));
-  const bool distort_rule =
-      options.refine_where_smoothing_distorts && report.folded_faces < kHeavilyFolded * static_cast<double>(faces.rows());
   const double low = options.distorting_move_low, high = options.distorting_move_high;
-  const double distort_weight = !distort_rule || report.smoothing_move <= low ? 0.0
-                                : report.smoothing_move >= high             ? 1.0
-                                                                             : (report.smoothing_move - low) / (high - low);
+  const double move_weight = report.smoothing_move <= low ? 0.0
+                             : report.smoothing_move >= high ? 1.0
+                                                             : (report.smoothing_move - low) / (high - low);
+  const double folded_share = report.folded_faces / static_cast<double>(faces.rows());
+  const double fold_weight = folded_share >= options.folded_high ? 0.0
+                             : folded_share < options.folded_low ? 1.0
+                                                                 : (options.folded_high - folded_share) / (options.folded_high - options.folded_low);
+  const double distort_weight = options.refine_where_smoothing_distorts ? move_weight * fold_weight : 0.0;
   clock.done("untangling");
   if (distort_weight == 0 || distort_weight == 1)
     return denoise_after_untangling(positions, faces, options, sigma, edge, smoothed, distort_weight, result, report, step, error);

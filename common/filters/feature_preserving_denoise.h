@@ -41,10 +41,11 @@
 //    faces meeting at creases (kRevealedCreaseContrast);
 //  - a mesh that the noise-level smoothing moves further than the noise did (kDistortingMoveHigh) is
 //    refined from its input, neither untangled nor smoothed, unless a tenth of its faces are folded
-//    (kHeavilyFolded): on a coarse CAD export, whose features are a few edges wide, the smoothing
+//    (kHeavilyFoldedLow/High): on a coarse CAD export, whose features are a few edges wide, the smoothing
 //    turns faces over by itself, which the tangle test took for noise, and flattens the features,
-//    which no refinement brings back (docs/quality.md item 17); from kDistortingMoveLow on, an
-//    uncertain move, that result and the usual route's are blended (item 33);
+//    which no refinement brings back (docs/quality.md item 17); where the move (from
+//    kDistortingMoveLow) or the folded share (from kHeavilyFoldedLow) is uncertain, that result and
+//    the usual route's are blended (items 33, 34);
 //  - the paper's HHT stage above is off by default (paper_stage): measured, it makes the result
 //    worse than the refinement alone on most cases (docs/quality.md).
 #pragma once
@@ -116,16 +117,20 @@ constexpr double kRevealedCreaseContrast = 60.0;
 // The noise-level smoothing distorts a mesh whose features are a few edges wide (a coarse CAD
 // export): it moves it by more than the noise's RMS (sqrt(3) sigma) times kDistortingMoveHigh, where
 // on the corpus's organic and CAD meshes it moves it by at most 0.96 of it. Such a mesh is refined
-// from its input, neither untangled nor smoothed, unless at least kHeavilyFolded of its faces are
+// from its input, neither untangled nor smoothed, unless at least kHeavilyFoldedHigh of its faces are
 // folded against their corners' normals (heavy tangential noise, which only the smoothing
 // undoes). docs/quality.md item 17. From kDistortingMoveLow to kDistortingMoveHigh the reading is
 // uncertain: coarse exports read 0.8-1.5, one mesh on both sides of a threshold from one noise draw
 // to the next, and which result serves it better does not follow the reading; there both run and
 // are blended, the share of the refinement from the input rising linearly across the band (organic
-// meshes with fewer than kHeavilyFolded folded read at most 0.89; item 33).
+// meshes with fewer than kHeavilyFoldedLow folded read at most 0.89; item 33). The folded share is
+// read with a band too, from kHeavilyFoldedLow to kHeavilyFoldedHigh, where the refinement from the
+// input's share falls linearly (coarse exports read on both sides of a tenth from one noise draw to
+// the next; item 34).
 constexpr double kDistortingMoveLow = 0.9;
 constexpr double kDistortingMoveHigh = 1.1;
-constexpr double kHeavilyFolded = 0.1;
+constexpr double kHeavilyFoldedLow = 0.08;
+constexpr double kHeavilyFoldedHigh = 0.12;
 
 // The refinement's range width on faces not within one ring of an edge sharper than
 // kCreaseDihedral degrees on the noise-level smoothing (docs/quality.md item 14): the narrow
@@ -157,7 +162,7 @@ struct DenoiseOptions {
   bool refine_flat_parts = true;  // a mesh with exactly flat parts (its noise estimate capped by the
                                   // flat hinges: a CAD part) keeps the refinement unless untangled;
                                   // with the noise given (no estimate) the rule cannot apply
-  bool refine_where_smoothing_distorts = true;  // kDistortingMoveLow/High, kHeavilyFolded (items 17, 33)
+  bool refine_where_smoothing_distorts = true;  // kDistortingMoveLow/High, kHeavilyFoldedLow/High (items 17, 33, 34)
   bool detect_features = true;  // false: the torus-like case, no feature separation (Fig. 8)
   bool show_features = false;   // detect them for the caller (report.type, feature_lines) even where
                                 // no stage uses them; otherwise only the paper's stage asks for them
@@ -185,6 +190,8 @@ struct DenoiseOptions {
   double refine_extra_rounds_factor = kExtraRoundsFactor;
   double distorting_move_low = kDistortingMoveLow;  // the uncertain band of item 17's rule (experiments)
   double distorting_move_high = kDistortingMoveHigh;
+  double folded_low = kHeavilyFoldedLow;  // the folded share's band of item 17's rule (experiments)
+  double folded_high = kHeavilyFoldedHigh;
   double no_crease_contrast = kNoCreaseContrast;  // the uncertain band of the route (experiments)
   double crease_contrast = kCreaseContrast;
 };

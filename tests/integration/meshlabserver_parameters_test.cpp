@@ -578,9 +578,29 @@ TEST(MeshlabserverParameters, DenoiseBlendsWhereTheSmoothingsMoveIsUncertain) {
   ASSERT_LT(d.report.distort_weight, 1.0);
   const ServerRun run = run_resource(d.path, "denoise.mlx", {}, "denoise_uncertain_move");
   expect_positions(saved_positions(run), d.expected, d.in.diagonal, "blended routes");
-  EXPECT_TRUE(std::regex_search(run.log, std::regex("an uncertain reading \\(from 0\\.9 to 1\\.1\\): the result is [0-9]+% the "
-                                                    "refinement from the input and [0-9]+% the usual route's below")))
+  EXPECT_TRUE(std::regex_search(run.log, std::regex("an uncertain reading \\(a move from 0\\.9 to 1\\.1, or from 8% to 12% of "
+                                                    "the faces folded\\): the result is [0-9]+% the refinement from the "
+                                                    "input and [0-9]+% the usual route's below")))
       << run.log;
+}
+
+// Handle at 30% noise along the normals: its noise-level smoothing moves it by more than the noise
+// did, with about a tenth of its faces folded, an uncertain reading of item 17's folded share;
+// denoise.mlx blends the two routes (item 34) as the library does.
+TEST(MeshlabserverParameters, DenoiseBlendsWhereTheFoldedShareIsUncertain) {
+  DenoisedInput d;
+  ASSERT_NO_FATAL_FAILURE(denoise_noisy("handle", 30.0, NoiseDirection::Normal, {}, d));
+  ASSERT_GE(d.report.smoothing_move, kDistortingMoveHigh);
+  ASSERT_GT(d.report.folded_faces, kHeavilyFoldedLow * d.in.faces.rows());
+  ASSERT_LT(d.report.folded_faces, kHeavilyFoldedHigh * d.in.faces.rows());
+  ASSERT_GT(d.report.distort_weight, 0.0);
+  ASSERT_LT(d.report.distort_weight, 1.0);
+  const ServerRun run = run_resource(d.path, "denoise.mlx", {}, "denoise_uncertain_folded_share");
+  expect_positions(saved_positions(run), d.expected, d.in.diagonal, "blended routes");
+  const std::string shares = std::to_string(static_cast<int>(std::lround(100 * d.report.distort_weight))) +
+                             "% the refinement from the input and " +
+                             std::to_string(static_cast<int>(std::lround(100 * (1 - d.report.distort_weight)))) + "% the usual route's";
+  EXPECT_NE(run.log.find(shares), std::string::npos) << shares << "\n" << run.log;
 }
 
 // Mannequin-devil at 10% isotropic noise reads uncertain creases: denoise.mlx blends the refinement

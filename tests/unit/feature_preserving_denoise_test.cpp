@@ -375,7 +375,7 @@ TEST(FeaturePreservingDenoise, CoarseCadExportIsRefinedFromItsInput) {
   o.refine_where_smoothing_distorts = false;
   const double e_without = mean_face_normal_error_degrees(denoise(noisy, m.faces, o, &without), m.positions, m.faces);
   EXPECT_GE(with.smoothing_move, kDistortingMoveHigh);
-  EXPECT_LT(with.folded_faces, kHeavilyFolded * m.faces.rows());
+  EXPECT_LT(with.folded_faces, kHeavilyFoldedLow * m.faces.rows());
   EXPECT_EQ(with.distort_weight, 1.0);
   EXPECT_TRUE(with.smoothing_distorts());
   EXPECT_FALSE(with.untangled);
@@ -398,7 +398,7 @@ TEST(FeaturePreservingDenoise, AnUncertainMoveBlendsBothRoutes) {
   const Positions blended = denoise(noisy, m.faces, {}, &report);
   EXPECT_GT(report.smoothing_move, kDistortingMoveLow);
   EXPECT_LT(report.smoothing_move, kDistortingMoveHigh);
-  EXPECT_LT(report.folded_faces, kHeavilyFolded * m.faces.rows());
+  EXPECT_LT(report.folded_faces, kHeavilyFoldedLow * m.faces.rows());
   const double w = report.distort_weight;
   EXPECT_NEAR(w, (report.smoothing_move - kDistortingMoveLow) / (kDistortingMoveHigh - kDistortingMoveLow), 1e-12);
   ASSERT_GT(w, 0.05);
@@ -417,6 +417,51 @@ TEST(FeaturePreservingDenoise, AnUncertainMoveBlendsBothRoutes) {
   EXPECT_LT((blended - (w * refined + (1 - w) * usual)).cwiseAbs().maxCoeff(), 1e-9 * diagonal);
   EXPECT_LT(mean_face_normal_error_degrees(blended, m.positions, m.faces),
             mean_face_normal_error_degrees(denoise(noisy, m.faces, threshold), m.positions, m.faces) - 2);
+}
+
+// An uncertain folded share (item 34): handle at 5% isotropic noise has 8.9-10.1% of its faces
+// folded over noise draws, on both sides of the tenth that item 17 read as heavy tangential noise,
+// and its result jumped with the draw (13.9-14.7 degrees routed as usual, 21.7-28.4 refined from
+// the input). From kHeavilyFoldedLow to kHeavilyFoldedHigh the refinement from the input's share
+// falls linearly: over six draws the worst result and the mean are lower (18.8 and 16.1 against
+// 28.4 and 19.3), though a draw that was routed as usual loses (16.5 against 14.7).
+TEST(FeaturePreservingDenoise, AnUncertainFoldedShareBlendsBothRoutes) {
+  const test::ArrayMesh m = test::load_data_mesh("handle");
+  DenoiseOptions threshold;
+  threshold.folded_low = threshold.folded_high = 0.1;  // the rule before item 34
+  double band_sum = 0, band_worst = 0, threshold_sum = 0, threshold_worst = 0;
+  int blended_draws = 0;
+  for (int seed = 1; seed <= 6; ++seed) {
+    const Positions noisy = add_gaussian_noise(m.positions, m.faces, 5, NoiseDirection::Isotropic, seed);
+    DenoiseReport report;
+    const Positions blended = denoise(noisy, m.faces, {}, &report);
+    EXPECT_GT(report.smoothing_move, kDistortingMoveHigh) << seed;
+    const double share = report.folded_faces / static_cast<double>(m.faces.rows());
+    if (share > kHeavilyFoldedLow && share < kHeavilyFoldedHigh) {
+      ++blended_draws;
+      EXPECT_NEAR(report.distort_weight, (kHeavilyFoldedHigh - share) / (kHeavilyFoldedHigh - kHeavilyFoldedLow), 1e-12) << seed;
+    }
+    const double band = mean_face_normal_error_degrees(blended, m.positions, m.faces);
+    const double old = mean_face_normal_error_degrees(denoise(noisy, m.faces, threshold), m.positions, m.faces);
+    band_sum += band;
+    band_worst = std::max(band_worst, band);
+    threshold_sum += old;
+    threshold_worst = std::max(threshold_worst, old);
+    if (seed == 1) {  // the result is the two routes' weighted sum
+      ASSERT_GT(report.distort_weight, 0.05);
+      ASSERT_LT(report.distort_weight, 0.95);
+      DenoiseOptions from_input, routed;
+      from_input.folded_low = from_input.folded_high = 1;  // refined from the input however many are folded
+      routed.refine_where_smoothing_distorts = false;
+      const double w = report.distort_weight;
+      const Positions expected = w * denoise(noisy, m.faces, from_input) + (1 - w) * denoise(noisy, m.faces, routed);
+      const double diagonal = (m.positions.colwise().maxCoeff() - m.positions.colwise().minCoeff()).norm();
+      EXPECT_LT((blended - expected).cwiseAbs().maxCoeff(), 1e-9 * diagonal);
+    }
+  }
+  EXPECT_GE(blended_draws, 4);
+  EXPECT_LT(band_worst, threshold_worst - 5);
+  EXPECT_LT(band_sum / 6, threshold_sum / 6 - 2);
 }
 
 // Both routes of the blend start from one reading of the input: the noise estimate and the
@@ -458,7 +503,7 @@ TEST(FeaturePreservingDenoise, HeavilyFoldedCoarseExportIsStillUntangled) {
   DenoiseReport report;
   const double e = mean_face_normal_error_degrees(denoise(noisy, m.faces, {}, &report), m.positions, m.faces);
   EXPECT_GT(report.smoothing_move, kDistortingMoveHigh);
-  EXPECT_GE(report.folded_faces, kHeavilyFolded * m.faces.rows());
+  EXPECT_GE(report.folded_faces, kHeavilyFoldedHigh * m.faces.rows());
   EXPECT_FALSE(report.smoothing_distorts());
   EXPECT_EQ(report.distort_weight, 0.0);
   EXPECT_TRUE(report.untangled);
@@ -467,7 +512,7 @@ TEST(FeaturePreservingDenoise, HeavilyFoldedCoarseExportIsStillUntangled) {
 
 // On the corpus's meshes the noise-level smoothing moves the mesh by less than the noise did
 // (at most 0.96 of its RMS at 2-30% noise, and below kDistortingMoveLow where fewer than
-// kHeavilyFolded of the faces are folded): the rule leaves them as they were.
+// kHeavilyFoldedLow of the faces are folded): the rule leaves them as they were.
 TEST(FeaturePreservingDenoise, SmoothingOfACorpusMeshMovesItLessThanTheNoise) {
   for (const char* name : {"fandisk", "cow", "elephant"}) {
     const test::ArrayMesh m = test::load_data_mesh(name);
@@ -477,7 +522,7 @@ TEST(FeaturePreservingDenoise, SmoothingOfACorpusMeshMovesItLessThanTheNoise) {
       denoise(noisy, m.faces, {}, &report);
       EXPECT_GT(report.smoothing_move, 0.5) << name << " " << percent;
       EXPECT_LT(report.smoothing_move, kDistortingMoveHigh) << name << " " << percent;
-      if (report.folded_faces < kHeavilyFolded * m.faces.rows()) {
+      if (report.folded_faces < kHeavilyFoldedLow * m.faces.rows()) {
         EXPECT_LT(report.smoothing_move, kDistortingMoveLow) << name << " " << percent;
       }
       EXPECT_EQ(report.distort_weight, 0.0) << name << " " << percent;
