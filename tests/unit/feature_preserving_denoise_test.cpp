@@ -25,6 +25,19 @@ Positions denoise(const Positions& p, const Faces& f, const DenoiseOptions& o, D
   return result;
 }
 
+using ProgressCalls = std::vector<std::pair<int, std::string>>;  // percent and stage, in order
+
+// The denoiser with default options, its progress callback's calls recorded.
+ProgressCalls denoise_with_progress(const Positions& p, const Faces& f, DenoiseReport& report) {
+  ProgressCalls calls;
+  Positions result;
+  std::string error;
+  EXPECT_TRUE(feature_preserving_denoise(p, f, {}, result, report, error,
+                                         [&](int percent, const char* stage) { calls.emplace_back(percent, stage); }))
+      << error;
+  return calls;
+}
+
 // The adaptive smoothing at the denoiser's noise level: what its route to the smoothing gives.
 Positions adaptive_smoothing(const Positions& p, const Faces& f, double sigma) {
   NoiseAdaptiveSmoothingOptions o;
@@ -470,13 +483,8 @@ TEST(FeaturePreservingDenoise, AnUncertainFoldedShareBlendsBothRoutes) {
 TEST(FeaturePreservingDenoise, AnUncertainMoveReadsTheInputOnce) {
   const test::ArrayMesh m = test::load_data_mesh("handle");
   const Positions noisy = add_gaussian_noise(m.positions, m.faces, 10, NoiseDirection::Normal, 1);
-  std::vector<std::pair<int, std::string>> calls;
-  Positions result;
   DenoiseReport report;
-  std::string error;
-  ASSERT_TRUE(feature_preserving_denoise(noisy, m.faces, {}, result, report, error,
-                                         [&](int percent, const char* stage) { calls.emplace_back(percent, stage); }))
-      << error;
+  const ProgressCalls calls = denoise_with_progress(noisy, m.faces, report);
   ASSERT_GT(report.distort_weight, 0.0);
   ASSERT_LT(report.distort_weight, 1.0);
   const auto starts = [&](const std::string& stage) {
@@ -593,13 +601,8 @@ TEST(FeaturePreservingDenoise, UntanglingStartsFromTheSecondOrderSmoothing) {
 TEST(FeaturePreservingDenoise, ProgressMovesThroughEveryLongStage) {
   const test::ArrayMesh m = test::load_data_mesh("fandisk");
   const Positions noisy = add_gaussian_noise(m.positions, m.faces, 30, NoiseDirection::Isotropic, 11);
-  std::vector<std::pair<int, std::string>> calls;
-  Positions result;
   DenoiseReport report;
-  std::string error;
-  ASSERT_TRUE(feature_preserving_denoise(noisy, m.faces, {}, result, report, error,
-                                         [&](int percent, const char* stage) { calls.emplace_back(percent, stage); }))
-      << error;
+  const ProgressCalls calls = denoise_with_progress(noisy, m.faces, report);
   ASSERT_TRUE(report.untangled);
   ASSERT_GT(report.refine_rounds, 1);
   for (size_t i = 1; i < calls.size(); ++i) EXPECT_GE(calls[i].first, calls[i - 1].first) << calls[i].second;
