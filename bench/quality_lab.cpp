@@ -1815,6 +1815,18 @@ int main(int argc, char** argv) {
       o.noise = ne.imf_sigma / ne.mean_edge;
     }
     Positions out;
+    if (std::getenv("LAB_TANGLEBLEND")) {  // experiment: started from the untangling smoothing or from the input, and blends
+      DenoiseOptions a = o, b = o;
+      a.tangled_share = 0;
+      b.untangle = false;
+      Positions pa, pb;
+      DenoiseReport ra, rb;
+      feature_preserving_denoise(noisy, f, a, pa, ra, err);
+      feature_preserving_denoise(noisy, f, b, pb, rb, err);
+      show("tangle untangled", pa);
+      show("tangle from the input", pb);
+      for (double w : {0.25, 0.5, 0.75}) { char nm[40]; std::snprintf(nm, sizeof nm, "tangle blend %.2f untangled", w); show(nm, Positions(w * pa + (1 - w) * pb)); }
+    }
     if (std::getenv("LAB_DISTORTBLEND")) {  // experiment: item 17's two outcomes and their blends
       DenoiseOptions a = o, b = o;
       a.distorting_move_low = a.distorting_move_high = 0;

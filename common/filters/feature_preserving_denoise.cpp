@@ -278,7 +278,7 @@ bool denoise_after_untangling(const Positions& positions, const Faces& faces, co
   StageClock clock(report.stages);
   report.distort_weight = distort_weight;
   report.untangled = options.untangle && !report.smoothing_distorts() &&
-                     report.flipped_faces > kTangledShare * static_cast<double>(faces.rows());
+                     report.flipped_faces > options.tangled_share * static_cast<double>(faces.rows());
   const Positions& start = report.untangled ? smoothed : positions;
   // A surface without sharp creases (organic): the guided refinement, made for creases, would
   // facet it; the adaptive smoothing with its cross-validated cut-off is the better result. Long
@@ -362,6 +362,10 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
   }
   if (!(options.folded_low >= 0 && options.folded_low <= options.folded_high)) {
     error = "folded share band out of range: from 0 up to folded_high";
+    return false;
+  }
+  if (!(options.tangled_share >= 0 && options.tangled_share <= 1)) {
+    error = "tangled share out of range: 0 to 1";
     return false;
   }
   if (!(options.no_crease_contrast >= 0 && options.no_crease_contrast <= options.crease_contrast && std::isfinite(options.crease_contrast))) {

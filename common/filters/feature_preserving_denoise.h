@@ -192,6 +192,7 @@ struct DenoiseOptions {
   double distorting_move_high = kDistortingMoveHigh;
   double folded_low = kHeavilyFoldedLow;  // the folded share's band of item 17's rule (experiments)
   double folded_high = kHeavilyFoldedHigh;
+  double tangled_share = kTangledShare;  // the untangling's gate (experiments)
   double no_crease_contrast = kNoCreaseContrast;  // the uncertain band of the route (experiments)
   double crease_contrast = kCreaseContrast;
 };

@@ -539,6 +539,27 @@ TEST(FeaturePreservingDenoise, SmoothingOfACorpusMeshMovesItLessThanTheNoise) {
   }
 }
 
+// The experiment bands and gates of the routes (items 17, 32, 33, 34): a reversed or NaN band is
+// refused with a message, and the result is not touched.
+TEST(FeaturePreservingDenoise, RefusesABadRouteBand) {
+  const test::ArrayMesh m = test::load_data_mesh("cube-meshed");
+  for (int bad = 0; bad < 6; ++bad) {
+    DenoiseOptions o;
+    if (bad == 0) o.distorting_move_low = 1.2;  // above distorting_move_high
+    if (bad == 1) o.folded_low = 0.2;  // above folded_high
+    if (bad == 2) o.folded_low = std::nan("");
+    if (bad == 3) o.no_crease_contrast = 12;  // above crease_contrast
+    if (bad == 4) o.tangled_share = -0.1;
+    if (bad == 5) o.tangled_share = std::nan("");
+    Positions result = m.positions;
+    DenoiseReport report;
+    std::string error;
+    EXPECT_FALSE(feature_preserving_denoise(m.positions, m.faces, o, result, report, error)) << bad;
+    EXPECT_NE(error.find("out of range"), std::string::npos) << bad << " " << error;
+    EXPECT_EQ(result, m.positions) << bad;
+  }
+}
+
 TEST(FeaturePreservingDenoise, RefusesABadRoundRule) {
   const test::ArrayMesh m = test::load_data_mesh("cube-meshed");
   for (int bad = 0; bad < 4; ++bad) {
