@@ -95,7 +95,9 @@ QString tangential_share_line(double share) {
       .arg(share < 0.5 ? " (noise mostly along the normals)" : "");
 }
 
-QString noise_estimate_text(const hht::NoiseEstimate& e) {
+namespace {
+
+QString estimate_source_text(const hht::NoiseEstimate& e) {
   if (hht::may_be_surface_detail(e))
     return QString("estimated from the finest IMF; clean meshes read up to %1% from their own detail at the scale of "
                    "their edges, which no estimate tells from noise: if this mesh had little or no noise, undo and "
@@ -117,6 +119,16 @@ QString noise_estimate_text(const hht::NoiseEstimate& e) {
       .arg(100 * e.imf_sigma / e.mean_edge, 0, 'f', 1).arg(hht::kFlatHingeBound)
       .arg(100 * e.hinge_sigma / e.mean_edge, 0, 'f', 2)
       .arg(e.relative() < hht::kNoiseFree ? "; the mesh reads as noise-free and is left as it is" : "");
+}
+
+}  // namespace
+
+QString noise_estimate_text(const hht::NoiseEstimate& e) {
+  if (!e.rests_on_few_samples()) return estimate_source_text(e);
+  return QString("%1; read over only %2 vertices (the others lie on a boundary or in pieces too short for EMD), so "
+                 "it may be far off: if the result is too weak or too strong, undo and give noisePercent")
+      .arg(estimate_source_text(e))
+      .arg(e.samples);
 }
 
 QString untouched_vertices_line(int kept) {

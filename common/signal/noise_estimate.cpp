@@ -34,6 +34,8 @@ double folded_normal_quantile(double q) {
   return 0.5 * (low + high);
 }
 
+bool NoiseEstimate::rests_on_few_samples() const { return samples > 0 && samples < kFewImfSamples; }
+
 bool may_be_surface_detail(const NoiseEstimate& estimate) {
   return !estimate.capped() && !estimate.impulsive() && estimate.relative() >= kNoiseFree && estimate.relative() <= kCleanDetailReads;
 }

@@ -380,6 +380,37 @@ TEST(MeshlabserverParameters, BilateralSigmasAndPasses) {
 
 // ------------------------------------------------------------------------------ denoise
 
+// A mesh written as an OFF file in the test output folder; returns its path.
+std::string write_off_mesh(const std::string& file, const Positions& positions, const Faces& faces) {
+  const std::string path = output_path(file);
+  std::ofstream out(path);
+  out << "OFF\n" << positions.rows() << " " << faces.rows() << " 0\n";
+  out.precision(9);
+  for (Eigen::Index v = 0; v < positions.rows(); ++v) out << positions(v, 0) << " " << positions(v, 1) << " " << positions(v, 2) << "\n";
+  for (Eigen::Index f = 0; f < faces.rows(); ++f) out << "3 " << faces(f, 0) << " " << faces(f, 1) << " " << faces(f, 2) << "\n";
+  return path;
+}
+
+// A noisy strip three vertices wide: its noise estimate rests on its few dozen interior vertices,
+// and smooth.mlx's log says so and asks for the noise level.
+TEST(MeshlabserverParameters, SmoothSaysWhenTheEstimateRestsOnAFewVertices) {
+  const ArrayMesh strip = grid(40, 3);
+  const Positions noisy =
+      add_gaussian_noise(strip.positions, strip.faces, 10, NoiseDirection::Normal, 3).cast<float>().cast<double>();
+  const std::string input = write_off_mesh("strip_noisy.off", noisy, strip.faces);
+  HamiltonianCycle cycle;
+  NoiseEstimate estimate;
+  std::string error;
+  ASSERT_TRUE(hamiltonian_cycle(strip.faces, static_cast<int>(noisy.rows()), {}, cycle, error)) << error;
+  ASSERT_TRUE(estimate_noise(noisy, strip.faces, cycle, {}, estimate, error)) << error;
+  ASSERT_TRUE(estimate.rests_on_few_samples());
+  const ServerRun run = run_resource(input, "smooth.mlx", {}, "smooth_few_samples");
+  EXPECT_NE(run.log.find("read over only " + std::to_string(estimate.samples) + " vertices"), std::string::npos) << run.log;
+  EXPECT_NE(run.log.find("so it may be far off: if the result is too weak or too strong, undo and give noisePercent"),
+            std::string::npos)
+      << run.log;
+}
+
 // A noisy copy of a data mesh, written as a PLY the way MeshLab will read it (float positions):
 // `noisy` holds those positions, `path` the file.
 void write_noisy(const std::string& name, const Input& in, double percent, NoiseDirection direction, unsigned seed,
@@ -498,15 +529,7 @@ TEST(MeshlabserverParameters, DenoiseRefinesAFinelyMeshedPart) {
   const ArrayMesh cube = midpoint_subdivision(midpoint_subdivision(load_data_mesh("cube-meshed")));
   const Positions noisy =
       add_gaussian_noise(cube.positions, cube.faces, 2.0, NoiseDirection::Normal, 17).cast<float>().cast<double>();
-  const std::string input = output_path("cube_cut16_noisy.off");
-  {
-    std::ofstream out(input);
-    out << "OFF\n" << noisy.rows() << " " << cube.faces.rows() << " 0\n";
-    out.precision(9);
-    for (Eigen::Index v = 0; v < noisy.rows(); ++v) out << noisy(v, 0) << " " << noisy(v, 1) << " " << noisy(v, 2) << "\n";
-    for (Eigen::Index f = 0; f < cube.faces.rows(); ++f)
-      out << "3 " << cube.faces(f, 0) << " " << cube.faces(f, 1) << " " << cube.faces(f, 2) << "\n";
-  }
+  const std::string input = write_off_mesh("cube_cut16_noisy.off", noisy, cube.faces);
   Positions expected;
   DenoiseReport report;
   std::string error;

@@ -26,6 +26,20 @@ double mad_sigma(std::vector<double> x) {
   return x[x.size() / 2] / 0.6745;
 }
 
+// A strip three vertices wide has one interior vertex a column: its estimate rests on those alone,
+// a few dozen on a short strip (which the filters then say in their log), hundreds on a long one.
+TEST(NoiseEstimate, SaysWhenItRestsOnAFewVertices) {
+  for (int length : {40, 400}) {
+    const test::ArrayMesh strip = test::grid(length, 3);
+    const Positions noisy = add_gaussian_noise(strip.positions, strip.faces, 10, NoiseDirection::Normal, 3);
+    const NoiseEstimate e = estimate(noisy, strip.faces);
+    EXPECT_GT(e.samples, 0) << length;
+    EXPECT_LE(e.samples, length - 2) << length;  // the interior vertices only
+    EXPECT_EQ(e.rests_on_few_samples(), e.samples < kFewImfSamples) << length;
+    EXPECT_EQ(e.rests_on_few_samples(), length == 40) << length << " " << e.samples;
+  }
+}
+
 TEST(NoiseEstimate, FirstImfOfWhiteNoiseHoldsMostOfIt) {
   std::mt19937_64 rng(5);
   std::normal_distribution<double> gauss(0.0, 2.0);
