@@ -380,14 +380,18 @@ TEST(MeshlabserverParameters, BilateralSigmasAndPasses) {
 
 // ------------------------------------------------------------------------------ denoise
 
-// A mesh written as an OFF file in the test output folder; returns its path.
-std::string write_off_mesh(const std::string& file, const Positions& positions, const Faces& faces) {
+// A noisy copy of `mesh` (positions rounded to float, as MeshLab holds them) written as an OFF file
+// in the test output folder; returns its path.
+std::string write_noisy_off(const std::string& file, const ArrayMesh& mesh, double percent, NoiseDirection direction,
+                            unsigned seed, Positions& noisy) {
+  noisy = add_gaussian_noise(mesh.positions, mesh.faces, percent, direction, seed).cast<float>().cast<double>();
   const std::string path = output_path(file);
   std::ofstream out(path);
-  out << "OFF\n" << positions.rows() << " " << faces.rows() << " 0\n";
+  out << "OFF\n" << noisy.rows() << " " << mesh.faces.rows() << " 0\n";
   out.precision(9);
-  for (Eigen::Index v = 0; v < positions.rows(); ++v) out << positions(v, 0) << " " << positions(v, 1) << " " << positions(v, 2) << "\n";
-  for (Eigen::Index f = 0; f < faces.rows(); ++f) out << "3 " << faces(f, 0) << " " << faces(f, 1) << " " << faces(f, 2) << "\n";
+  for (Eigen::Index v = 0; v < noisy.rows(); ++v) out << noisy(v, 0) << " " << noisy(v, 1) << " " << noisy(v, 2) << "\n";
+  for (Eigen::Index f = 0; f < mesh.faces.rows(); ++f)
+    out << "3 " << mesh.faces(f, 0) << " " << mesh.faces(f, 1) << " " << mesh.faces(f, 2) << "\n";
   return path;
 }
 
@@ -395,9 +399,8 @@ std::string write_off_mesh(const std::string& file, const Positions& positions, 
 // and smooth.mlx's log says so and asks for the noise level.
 TEST(MeshlabserverParameters, SmoothSaysWhenTheEstimateRestsOnAFewVertices) {
   const ArrayMesh strip = grid(40, 3);
-  const Positions noisy =
-      add_gaussian_noise(strip.positions, strip.faces, 10, NoiseDirection::Normal, 3).cast<float>().cast<double>();
-  const std::string input = write_off_mesh("strip_noisy.off", noisy, strip.faces);
+  Positions noisy;
+  const std::string input = write_noisy_off("strip_noisy.off", strip, 10, NoiseDirection::Normal, 3, noisy);
   HamiltonianCycle cycle;
   NoiseEstimate estimate;
   std::string error;
@@ -527,9 +530,8 @@ TEST(MeshlabserverParameters, DenoiseSmoothsSurfacesWithoutCreases) {
 // the library does, and the log names its crease lines (docs/quality.md item 28).
 TEST(MeshlabserverParameters, DenoiseRefinesAFinelyMeshedPart) {
   const ArrayMesh cube = midpoint_subdivision(midpoint_subdivision(load_data_mesh("cube-meshed")));
-  const Positions noisy =
-      add_gaussian_noise(cube.positions, cube.faces, 2.0, NoiseDirection::Normal, 17).cast<float>().cast<double>();
-  const std::string input = write_off_mesh("cube_cut16_noisy.off", noisy, cube.faces);
+  Positions noisy;
+  const std::string input = write_noisy_off("cube_cut16_noisy.off", cube, 2.0, NoiseDirection::Normal, 17, noisy);
   Positions expected;
   DenoiseReport report;
   std::string error;
