@@ -440,7 +440,9 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
     };
     report.flipped_faces += normal(positions).dot(normal(smoothed)) < 0;
   }
-  // A smoothing that moves the mesh further than the noise did distorts it (item 17).
+  // A smoothing that moves the mesh further than the noise did distorts it, unless a tenth of the
+  // faces are folded (item 17); each reading has an uncertain band, where the weight of the
+  // refinement from the input moves linearly (items 33 and 34).
   const double noise_rms = std::sqrt(3.0) * sigma * edge;
   report.smoothing_move = noise_rms > 0 ? std::sqrt((smoothed - positions).rowwise().squaredNorm().mean()) / noise_rms : 0;
   const std::vector<unsigned char> folded = folded_faces(positions, faces);
@@ -458,9 +460,9 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
   if (distort_weight == 0 || distort_weight == 1)
     return denoise_after_untangling(positions, faces, options, sigma, edge, smoothed, distort_weight, result, report, step, error);
 
-  // An uncertain move (item 33): the mesh refined from its input (item 17) and routed as usual from
-  // the same readings, the two blended with distort_weight on the first. The report is the usual
-  // route's.
+  // An uncertain reading (items 33, 34): the mesh refined from its input (item 17) and routed as
+  // usual from the same readings, the two blended with distort_weight on the first. The report is
+  // the usual route's.
   const auto part = [&](int from, int to) -> Step {
     return [&step, from, to](int percent, const char* what) { step(from + (to - from) * (percent - 30) / 70, what); };
   };
