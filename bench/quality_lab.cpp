@@ -1825,6 +1825,12 @@ int main(int argc, char** argv) {
       feature_preserving_denoise(noisy, f, b, pb, rb, err);
       show("tangle untangled", pa);
       show("tangle from the input", pb);
+      const auto share = [&](const Positions& p) {
+        const std::vector<unsigned char> folded = folded_faces(p, f);
+        return std::count(folded.begin(), folded.end(), 1) / double(f.rows());
+      };
+      std::printf("  tangle folded: untangled %.4f from the input %.4f input %.4f; moved apart %.3f noise RMS\n", share(pa), share(pb), share(noisy),
+                  std::sqrt((pa - pb).rowwise().squaredNorm().mean()) / (std::sqrt(3.0) * ra.sigma_used * h));
       for (double w : {0.25, 0.5, 0.75}) { char nm[40]; std::snprintf(nm, sizeof nm, "tangle blend %.2f untangled", w); show(nm, Positions(w * pa + (1 - w) * pb)); }
     }
     if (std::getenv("LAB_DISTORTBLEND")) {  // experiment: item 17's two outcomes and their blends
