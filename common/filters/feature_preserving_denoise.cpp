@@ -269,12 +269,13 @@ bool refine_from(const Positions& positions, const Positions& start, const Faces
   return true;
 }
 
-// The routes after the untangling smoothing (`smoothed`, read into `report`) with `distort_weight`
-// 0 or 1 (item 17): by the smoothing's creases to the adaptive smoothing, the refinement or a blend
-// of both. Progress from 30 percent.
+// The routes after the untangling smoothing (`smoothed`, its dihedral `angles`, read into `report`)
+// with `distort_weight` 0 or 1 (item 17): by the smoothing's creases to the adaptive smoothing, the
+// refinement or a blend of both. Progress from 30 percent.
 bool denoise_after_untangling(const Positions& positions, const Faces& faces, const DenoiseOptions& options, double sigma,
-                              double edge, const Positions& smoothed, double distort_weight, Positions& result,
-                              DenoiseReport& report, const Step& step, std::string& error) {
+                              double edge, const Positions& smoothed, const std::vector<DihedralAngle>& angles,
+                              double distort_weight, Positions& result, DenoiseReport& report, const Step& step,
+                              std::string& error) {
   StageClock clock(report.stages);
   report.distort_weight = distort_weight;
   report.untangled = options.untangle && !report.smoothing_distorts() &&
@@ -283,10 +284,6 @@ bool denoise_after_untangling(const Positions& positions, const Faces& faces, co
   // A surface without sharp creases (organic): the guided refinement, made for creases, would
   // facet it; the adaptive smoothing with its cross-validated cut-off is the better result. Long
   // crease lines are creases too, however few of the edges they hold (a finely meshed part).
-  const std::vector<DihedralAngle> angles = dihedral_angles(smoothed, faces);
-  const CreaseReadings readings = read_creases(angles);
-  report.crease_contrast = readings.contrast;
-  report.crease_lines = readings.lines;
   const bool creases = report.crease_contrast >= options.crease_contrast || report.crease_lines >= kCreaseLines;
   report.flat_parts_refined = !creases && options.refine_flat_parts && report.noise.capped() && !report.untangled;
   const bool may_smooth = options.smooth_surfaces_by_smoothing && !options.paper_stage && !creases &&
@@ -456,9 +453,15 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
                              : folded_share < options.folded_low ? 1.0
                                                                  : (options.folded_high - folded_share) / (options.folded_high - options.folded_low);
   const double distort_weight = options.refine_where_smoothing_distorts ? move_weight * fold_weight : 0.0;
+  // The smoothing's creases, read once for whichever routes follow.
+  const std::vector<DihedralAngle> angles = dihedral_angles(smoothed, faces);
+  const CreaseReadings readings = read_creases(angles);
+  report.crease_contrast = readings.contrast;
+  report.crease_lines = readings.lines;
   clock.done("untangling");
   if (distort_weight == 0 || distort_weight == 1)
-    return denoise_after_untangling(positions, faces, options, sigma, edge, smoothed, distort_weight, result, report, step, error);
+    return denoise_after_untangling(positions, faces, options, sigma, edge, smoothed, angles, distort_weight, result, report,
+                                    step, error);
 
   // An uncertain reading (items 33, 34): the mesh refined from its input (item 17) and routed as
   // usual from the same readings, the two blended with distort_weight on the first. The report is
@@ -474,9 +477,11 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
   const double read = seconds(report);
   DenoiseReport refined_report = report;
   Positions refined;
-  if (!denoise_after_untangling(positions, faces, options, sigma, edge, smoothed, 1.0, refined, refined_report, part(30, 60), error))
+  if (!denoise_after_untangling(positions, faces, options, sigma, edge, smoothed, angles, 1.0, refined, refined_report,
+                                part(30, 60), error))
     return false;
-  if (!denoise_after_untangling(positions, faces, options, sigma, edge, smoothed, 0.0, result, report, part(60, 99), error))
+  if (!denoise_after_untangling(positions, faces, options, sigma, edge, smoothed, angles, 0.0, result, report, part(60, 99),
+                                error))
     return false;
   result = distort_weight * refined + (1 - distort_weight) * result;
   report.distort_weight = distort_weight;
