@@ -286,7 +286,7 @@ Eigen::VectorXd hht_lowpass(const Eigen::VectorXd& s, const Faces& f, int n, int
 }  // namespace
 
 // The adaptive smoothing's options with the lab's knobs (LAB_NOSELECT, LAB_CAP, LAB_MUSCALE,
-// LAB_WEAKER, LAB_FIRST) applied: every mode runs the same filter.
+// LAB_WEAKER, LAB_FIRST, LAB_NOBORDERS) applied: every mode runs the same filter.
 NoiseAdaptiveSmoothingOptions lab_options() {
   NoiseAdaptiveSmoothingOptions o;
   o.select_cutoff = !std::getenv("LAB_NOSELECT");
@@ -295,6 +295,7 @@ NoiseAdaptiveSmoothingOptions lab_options() {
   if (const char* wa = std::getenv("LAB_WEAKER")) o.weaker_allowed = std::atof(wa);
   if (const char* g = std::getenv("LAB_FIRST")) o.first_order = std::atof(g);
   if (const char* b = std::getenv("LAB_CVBIAS")) o.selection_bias = std::atof(b);
+  if (std::getenv("LAB_NOBORDERS")) o.hold_borders = false;  // border vertices may move across their border (before item 35)
   if (const char* x = std::getenv("LAB_GIVEN")) o.noise = std::atof(x);  // the noise given (sigma / mean edge)
   if (std::getenv("LAB_SURE")) o.unbiased_risk = true;  // with LAB_GIVEN: the cut-off by Stein's risk
   if (const char* x = std::getenv("LAB_STRONGEST")) o.strongest_selected = std::atof(x);
@@ -1797,6 +1798,7 @@ int main(int argc, char** argv) {
     if (std::getenv("LAB_NOFITEACH")) o.refine_fit_each_pass = false;
     if (const char* x = std::getenv("LAB_ROUNDS")) o.refine_rounds = std::atoi(x);
     if (std::getenv("LAB_NOUNTANGLE")) o.untangle = false;
+    if (std::getenv("LAB_NOBORDERS")) o.hold_borders = false;
     if (const char* x = std::getenv("LAB_DRIFTSTEP")) o.refine_drift_step = std::atof(x);
     if (const char* x = std::getenv("LAB_EXTRAFACTOR")) o.refine_extra_rounds_factor = std::atof(x);
     if (const char* x = std::getenv("LAB_CONVERGEDSTEP")) o.refine_converged_step = std::atof(x);

@@ -85,6 +85,10 @@ bool apply(FilterRun& run) {
                     "%4 faces turned over put back, %5 more moved back until no longer turned over (wrinkles of the triangulation)")
                 .arg(report.unfolded_vertices).arg(report.held_vertices).arg(hht::kMoveRadius).arg(report.restored_faces)
                 .arg(report.unturned_faces));
+  if (report.border_vertices_held > 0)
+    run.log(QString("  %1 border vertices moved across their border by at most %2 noise sigma (the one-sided "
+                    "Laplacian there pulls open borders and the rims of holes in)")
+                .arg(report.border_vertices_held).arg(hht::kBorderMoveAcross));
   if (const QString line = tangential_share_line(report.tangential_share); !line.isEmpty()) run.log(line);
   run.log(smoothing_finish_line(report));
   if (const QString line = untouched_vertices_line(report.untouched_vertices_kept); !line.isEmpty()) run.log(line);

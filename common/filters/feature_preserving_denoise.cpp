@@ -321,6 +321,7 @@ bool denoise_after_untangling(const Positions& positions, const Faces& faces, co
     step(from, "No sharp creases: adaptive smoothing");
     NoiseAdaptiveSmoothingOptions smoothing;  // the adaptive smoothing's own filter
     smoothing.keep_untouched = false;
+    smoothing.hold_borders = options.hold_borders;
     smoothing.noise = sigma;
     smoothing.unbiased_risk = options.noise > 0;  // the user's noise level: its cut-off by Stein's risk
     if (!noise_adaptive_smooth(positions, faces, smoothing, result, report.smoothing, error, [&](int percent, const char*) {
@@ -423,6 +424,7 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
   smoothing.face_normal_pass = false;  // the refinement was measured from the smoothing without them
   smoothing.taubin_slide = false;
   smoothing.keep_untouched = false;  // feature_preserving_denoise keeps them at the end
+  smoothing.hold_borders = options.hold_borders;
   smoothing.first_order = options.untangle_first_order;
   smoothing.mu_scale = options.untangle_mu_scale;
   NoiseAdaptiveSmoothingReport smoothing_report;

@@ -155,6 +155,7 @@ struct DenoiseOptions {
                                         // (filters/spike_removal.h; off: the despiked mesh's own run)
   double noise = 0;             // sigma / mean edge length; 0 or less: estimated
   bool untangle = true;         // start from the noise-adaptive smoothing when the input is tangled
+  bool hold_borders = true;     // both smoothings hold border vertices (noise_adaptive_smoothing.h; experiments: off)
   double untangle_first_order = kUntangleFirstOrder;  // that smoothing's filter (experiments)
   double untangle_mu_scale = kUntangleMuScale;
   bool smooth_surfaces_by_smoothing = true;  // no sharp creases (kNoCreaseContrast): the adaptive smoothing

@@ -3,6 +3,7 @@
 #include "evaluation/gaussian_noise.h"
 #include "mesh/breadth_first_patches.h"
 #include "mesh/mesh_checks.h"
+#include "mesh/border_neighbours.h"
 #include "mesh/tangential_noise.h"
 #include "mesh/vertex_adjacency.h"
 #include "mesh/vertex_normals.h"
@@ -82,7 +83,7 @@ int hold_within_noise(Positions& x, const Positions& v, double radius) {
 }
 
 struct FinishCounts {
-  int unfolded = 0, held = 0, restored = 0, unturned = 0;
+  int border_held = 0, unfolded = 0, held = 0, restored = 0, unturned = 0;
 };
 
 // Step 3 by the cap, on the solve's output `solved` for the input `v` (unit mean edge); `share`
@@ -173,13 +174,15 @@ size_t slide_or_cap(const std::vector<Finish>& finishes, const RecorruptedRisks&
   return best;
 }
 
-// Step 3, Taubin's slide or the cap, and step 4 on the solve's output `solved` for the input `v`;
-// `v_normals`: v's smoothed vertex normals.
+// Step 3, Taubin's slide or the cap, then the borders held (item 35), and step 4 on the solve's
+// output `solved` for the input `v`; `v_normals`: v's smoothed vertex normals.
 Positions slid_and_unfolded(const Positions& solved, const Positions& v, const Positions& v_normals, const Faces& faces,
-                            const VertexAdjacency& adjacency, double sigma, double share, bool taubin_slide,
-                            const NoiseAdaptiveSmoothingOptions& options, FinishCounts& counts) {
+                            const VertexAdjacency& adjacency, const BorderNeighbours& border, double sigma,
+                            double share, bool taubin_slide, const NoiseAdaptiveSmoothingOptions& options,
+                            FinishCounts& counts) {
   Positions x = taubin_slide ? taubin_slides(solved, v, v_normals, adjacency)
                              : capped_slides(solved, v, faces, sigma, share, options);
+  if (options.hold_borders) counts.border_held = drop_moves_across_borders(v, v_normals, border, x, kBorderMoveAcross * sigma);
   counts.unfolded = unfold(x, faces, adjacency);
   return x;
 }
@@ -197,7 +200,7 @@ Positions finish_smoothing(Positions x, const Positions& v, const Faces& faces, 
 // The recorrupted risks of the smoothing at cut-off `mu` with each of `finishes`, on breadth-first
 // patches of a large mesh. False if a copy's solve failed. `v_normals`: v's smoothed vertex normals.
 bool finish_risks(const Positions& v, const Positions& v_normals, const Faces& faces, const VertexAdjacency& adjacency,
-                  double sigma, double tangential_share, double mu, double max_error,
+                  const BorderNeighbours& full_border, double sigma, double tangential_share, double mu, double max_error,
                   const NoiseAdaptiveSmoothingOptions& options, const std::vector<Finish>& finishes,
                   RecorruptedRisks& risks) {
   const bool sample = v.rows() > kPassSampleVertices;
@@ -213,6 +216,10 @@ bool finish_risks(const Positions& v, const Positions& v_normals, const Faces& f
   }
   const Faces& f = sample ? sampled_faces : faces;
   const VertexAdjacency& a = sample ? sampled_adjacency : adjacency;
+  // The mesh's own borders, not the patches' rims.
+  const BorderNeighbours sampled_border =
+      sample && options.hold_borders ? border_neighbours_among(full_border, kept) : BorderNeighbours{};
+  const BorderNeighbours& border = sample ? sampled_border : full_border;
   // The copies' noise is sqrt(1 + a^2) times the input's: the smoothing run on them is the one
   // set for that noise, its cut-off by the noise law's scaling (mu ~ 1 / sqrt(sigma)), its cap and
   // hold by the noise. With the input's cut-off the copies are smoothed too little, which
@@ -231,7 +238,7 @@ bool finish_risks(const Positions& v, const Positions& v_normals, const Faces& f
     outputs.clear();
     for (const Finish& finish : finishes) {
       std::optional<Positions>& x = slid[finish.taubin_slide];
-      if (!x) x = slid_and_unfolded(solved, y1, y1_normals, f, a, copy_sigma, share, finish.taubin_slide, options, counts);
+      if (!x) x = slid_and_unfolded(solved, y1, y1_normals, f, a, border, copy_sigma, share, finish.taubin_slide, options, counts);
       outputs.push_back(finish_smoothing(*x, y1, f, copy_sigma, finish.normal_pass, options, counts));
     }
     return true;
@@ -376,6 +383,7 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
   clock.done("solve");
 
   const double share = options.tangential_share ? tangential_noise_share(v, v_normals, adjacency, sigma) : 1.0;
+  const BorderNeighbours border = options.hold_borders ? border_neighbours(faces, n) : BorderNeighbours{};
   const std::vector<Finish> finishes = allowed_finishes(options, share);
   Finish chosen = finishes.front();
   if (finishes.size() > 1) {
@@ -383,7 +391,7 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
     // converge leaves the plain finish: the smoothing itself is done.
     step(92, "Finish: recorrupted risk");
     RecorruptedRisks risks;
-    report.finish_risk_scored = finish_risks(v, v_normals, faces, adjacency, sigma, share, report.mu,
+    report.finish_risk_scored = finish_risks(v, v_normals, faces, adjacency, border, sigma, share, report.mu,
                                              kSmoothingMaxError * diagonal / edge, options, finishes, risks);
     const std::vector<double> mean = report.finish_risk_scored ? risks.mean() : std::vector<double>{};
     report.finish_risk_scored = report.finish_risk_scored && mean[0] > 0;
@@ -397,11 +405,13 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
   }
   step(97, chosen.taubin_slide ? "Taubin's slide, unfolding and hold" : "Tangential cap, unfolding and hold");
   FinishCounts counts;
-  x = finish_smoothing(slid_and_unfolded(x, v, v_normals, faces, adjacency, sigma, share, chosen.taubin_slide, options, counts),
+  x = finish_smoothing(slid_and_unfolded(x, v, v_normals, faces, adjacency, border, sigma, share, chosen.taubin_slide,
+                                         options, counts),
                        v, faces, sigma, chosen.normal_pass, options, counts);
   clock.done("finish");
   report.face_normal_pass = chosen.normal_pass;
   report.taubin_slide = chosen.taubin_slide;
+  report.border_vertices_held = counts.border_held;
   report.unfolded_vertices = counts.unfolded;
   report.tangential_share = share;
   report.held_vertices = counts.held;

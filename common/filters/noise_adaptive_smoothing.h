@@ -104,6 +104,11 @@ constexpr double kStrongestSelected = 3.0;
 // gave the same 62 of 66 organic cases below Taubin on both numbers, 0.9 60, 1 55
 // (docs/quality.md item 23).
 constexpr double kSlideShare = 0.85;
+// How far a border vertex may move across its border, in noise sigmas (item 35): noise moves it
+// about that far, and the uniform Laplacian's one-sided ring pulls it further in. Over 18 meshes
+// with borders at 0-30% (lab), 0 (no move across) was better on open CAD sheets and worse on the
+// rims of holes in organic meshes, 2 gained half of 1's.
+constexpr double kBorderMoveAcross = 1.0;
 // The face-normal pass's risk (step 4b): copies drawn, and the vertices of a large mesh it is
 // scored on (breadth-first patches, like the cross-validation's), with a fixed seed so that the
 // same input gets the same choice.
@@ -127,6 +132,7 @@ struct NoiseAdaptiveSmoothingOptions {
   bool keep_untouched = true;    // impulsive noise: the vertices it left alone kept (keep_untouched_vertices.h; the denoiser does its own)
   bool tangential_share = true;  // step 3's cap scaled by the tangential noise the offsets allow (experiments: off)
   bool remove_scattered_spikes = true;  // impulsive noise read from scattered spikes: removed first (off: the despiked mesh's own run)
+  bool hold_borders = true;      // border vertices move across their border by at most kBorderMoveAcross sigmas (experiments: off)
   // Experiments (bench/quality_lab, docs/quality.md items 8-10): the tangential cap's factor
   // (infinity: no cap), the noise law's scale, how much weaker than the noise law's cut-off the
   // cross-validation may choose, the low-pass's first-order weight (0: second order only), the
@@ -160,6 +166,7 @@ struct NoiseAdaptiveSmoothingReport {
   double max_displacement = 0;
   double rms_displacement = 0;
   double tangential_share = 1;  // step 3's cap relative to isotropic noise's (tangential_noise.h)
+  int border_vertices_held = 0;  // border vertices whose move across the border was taken out (item 35)
   int unfolded_vertices = 0;   // moved to their one-ring centroid to undo a fold
   int held_vertices = 0;       // held at kMoveRadius noise sigmas from where they were
   int restored_faces = 0;      // turned over by the smoothing, put back (step 6)

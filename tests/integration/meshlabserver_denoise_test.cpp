@@ -7,7 +7,10 @@
 #include <wrap/io_trimesh/import_off.h>
 
 #include <filesystem>
+#include <algorithm>
 #include <fstream>
+#include <map>
+#include <regex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -103,6 +106,33 @@ TEST(MeshlabserverDenoise, MeshWithHolesIsDenoised) {
   EXPECT_EQ(run.log.find("feature lines"), std::string::npos) << run.log;
   for (const auto& v : out.vert) ASSERT_TRUE(std::isfinite(v.cP()[0]) && std::isfinite(v.cP()[1]) && std::isfinite(v.cP()[2]));
   EXPECT_LT(max_distance(out, in), 0.05 * bbox_diagonal(in));
+}
+
+// smooth.mlx on a noisy mesh with holes holds every border vertex that has one direction along its
+// border (two border edges) from sliding across it beyond the noise (docs/quality.md item 35),
+// and says how many: the count from the input's own edges.
+TEST(MeshlabserverDenoise, SmoothingHoldsTheRimsOfHoles) {
+  TriMesh in;
+  ASSERT_EQ(vcg::tri::io::ImporterOFF<TriMesh>::Open(in, data_mesh("elephant-with-holes").c_str()), 0);
+  std::map<std::pair<int, int>, int> edges;
+  for (const auto& f : in.face)
+    for (int k = 0; k < 3; ++k) {
+      const int a = static_cast<int>(vcg::tri::Index(in, f.cV(k))), b = static_cast<int>(vcg::tri::Index(in, f.cV((k + 1) % 3)));
+      ++edges[{std::min(a, b), std::max(a, b)}];
+    }
+  std::vector<int> border_edges(in.vn, 0);
+  for (const auto& [edge, faces] : edges)
+    if (faces == 1) ++border_edges[edge.first], ++border_edges[edge.second];
+  const long expected = std::count(border_edges.begin(), border_edges.end(), 2);
+  ASSERT_GT(expected, 1000);
+  const ServerRun run = run_meshlabserver(data_mesh("elephant-with-holes"),
+                                          chain_scripts("holes_smooth", {"add_noise.mlx", "smooth.mlx"}), "holes_smooth");
+  TriMesh out;
+  load(run, out);
+  std::smatch held;
+  ASSERT_TRUE(std::regex_search(run.log, held, std::regex("([0-9]+) border vertices moved across their border by at most 1 noise sigma")))
+      << run.log;
+  EXPECT_EQ(std::stol(held[1]), expected) << run.log;
 }
 
 // A clean CAD export (spool: its coarse triangulation read as 13% noise before the flat hinges
