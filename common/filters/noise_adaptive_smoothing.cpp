@@ -383,7 +383,7 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
   clock.done("solve");
 
   const double share = options.tangential_share ? tangential_noise_share(v, v_normals, adjacency, sigma) : 1.0;
-  const BorderNeighbours border = options.hold_borders ? border_neighbours(faces, n) : BorderNeighbours{};
+  const BorderNeighbours border = options.hold_borders ? border_neighbours(faces, adjacency) : BorderNeighbours{};
   const std::vector<Finish> finishes = allowed_finishes(options, share);
   Finish chosen = finishes.front();
   if (finishes.size() > 1) {

@@ -5,13 +5,15 @@
 
 namespace hht {
 
-BorderNeighbours border_neighbours(const Faces& faces, int vertex_count) {
+BorderNeighbours border_neighbours(const Faces& faces, const VertexAdjacency& adjacency) {
+  // Only the edges between two border vertices can be border edges: few on most meshes, so this
+  // costs little memory beside the smoothing's on a large one.
+  const int vertex_count = adjacency.vertices();
   std::vector<std::pair<int, int>> edges;
-  edges.reserve(3 * faces.rows());
   for (Eigen::Index f = 0; f < faces.rows(); ++f)
     for (int k = 0; k < 3; ++k) {
       const int a = faces(f, k), b = faces(f, (k + 1) % 3);
-      if (a != b) edges.emplace_back(std::min(a, b), std::max(a, b));
+      if (a != b && adjacency.boundary[a] && adjacency.boundary[b]) edges.emplace_back(std::min(a, b), std::max(a, b));
     }
   std::sort(edges.begin(), edges.end());
   BorderNeighbours out(vertex_count, {-1, -1});

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "mesh/mesh_arrays.h"
+#include "mesh/vertex_adjacency.h"
 
 #include <array>
 #include <vector>
@@ -15,8 +16,8 @@ namespace hht {
 // border vertex, where "along the border" has no single direction).
 using BorderNeighbours = std::vector<std::array<int, 2>>;
 
-// Faces must index vertices in [0, vertex_count).
-BorderNeighbours border_neighbours(const Faces& faces, int vertex_count);
+// `adjacency` is vertex_adjacency() of the same faces.
+BorderNeighbours border_neighbours(const Faces& faces, const VertexAdjacency& adjacency);
 
 // The border neighbours of the sampled vertices `kept` (breadth_first_patches.h), re-indexed into
 // it: the mesh's own borders only, not the sample's rims.

@@ -18,7 +18,7 @@ std::array<int, 2> sorted(std::array<int, 2> pair) {
 // direction along them.
 TEST(BorderNeighbours, AreTheTwoVerticesAlongTheBorder) {
   const test::ArrayMesh m = test::grid(3, 3);
-  const BorderNeighbours border = border_neighbours(m.faces, m.vertices());
+  const BorderNeighbours border = border_neighbours(m.faces, vertex_adjacency(m.faces, m.vertices()));
   EXPECT_EQ(sorted(border[0]), (std::array<int, 2>{1, 3}));
   EXPECT_EQ(sorted(border[1]), (std::array<int, 2>{0, 2}));
   EXPECT_EQ(sorted(border[5]), (std::array<int, 2>{2, 8}));
@@ -26,7 +26,7 @@ TEST(BorderNeighbours, AreTheTwoVerticesAlongTheBorder) {
 
   Faces bowtie(2, 3);
   bowtie << 0, 1, 2, 0, 3, 4;
-  const BorderNeighbours pinched = border_neighbours(bowtie, 5);
+  const BorderNeighbours pinched = border_neighbours(bowtie, vertex_adjacency(bowtie, 5));
   EXPECT_EQ(pinched[0], (std::array<int, 2>{-1, -1}));
   EXPECT_EQ(sorted(pinched[1]), (std::array<int, 2>{0, 2}));
 }
@@ -35,7 +35,7 @@ TEST(BorderNeighbours, AreTheTwoVerticesAlongTheBorder) {
 // rims are no border.
 TEST(BorderNeighbours, ASampleKeepsTheMeshsOwnBorderOnly) {
   const test::ArrayMesh m = test::grid(3, 3);
-  const BorderNeighbours border = border_neighbours(m.faces, m.vertices());
+  const BorderNeighbours border = border_neighbours(m.faces, vertex_adjacency(m.faces, m.vertices()));
   const BorderNeighbours among = border_neighbours_among(border, {3, 0, 1, 4});
   ASSERT_EQ(among.size(), 4u);
   EXPECT_EQ(sorted(among[1]), (std::array<int, 2>{0, 2}));  // vertex 0: 1 and 3 both kept
@@ -48,7 +48,7 @@ TEST(BorderNeighbours, ASampleKeepsTheMeshsOwnBorderOnly) {
 // has its part along y clamped to the limit, both ways; an interior vertex keeps its move.
 TEST(BorderNeighbours, OnlyTheMoveAcrossTheBorderIsClamped) {
   const test::ArrayMesh m = test::grid(5, 5);
-  const BorderNeighbours border = border_neighbours(m.faces, m.vertices());
+  const BorderNeighbours border = border_neighbours(m.faces, vertex_adjacency(m.faces, m.vertices()));
   Positions normals = Positions::Zero(m.vertices(), 3);
   normals.col(2).setOnes();
   Positions x = m.positions;
