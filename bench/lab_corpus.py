@@ -9,7 +9,7 @@ OUT/TAG_MODEL.tsv. Settings go to the lab as environment variables (LAB_FINISH=1
   python3 bench/lab_corpus.py TAG iso|normal|random|axis [NAME=VALUE ...]
   python3 bench/lab_corpus.py --oracle MODEL TAG [TAG ...]   cases won by at least one TAG's run
 
-Options: --levels 0.1,0.2,0.3, --jobs 2, --out build/lab. The meshes are read from libcgal-demo's
+Options: --levels 0.1,0.2,0.3, --meshes NAME,... (default the 22 above), --jobs 2, --out build/lab. The meshes are read from libcgal-demo's
 archive (scripts/setup.sh installs it) into OUT/meshes on first use.
 """
 import argparse
@@ -31,9 +31,9 @@ MESHES = ("homer cow femur elephant armadillo bunny00 bull camel dino man bear l
 COLUMNS = ("noisy_ea", "noisy_rms", "taubin_ea", "taubin_rms", "ours_ea", "ours_rms", "below_taubin", "whole")
 
 
-def mesh_folder(out):
+def mesh_folder(out, meshes):
     folder = os.path.join(out, "meshes")
-    missing = [m for m in MESHES if not os.path.exists(os.path.join(folder, m + ".off"))]
+    missing = [m for m in meshes if not os.path.exists(os.path.join(folder, m + ".off"))]
     if missing:
         if not os.path.exists(CGAL_DATA):
             sys.exit("no %s: run ./scripts/setup.sh (it installs libcgal-demo)" % CGAL_DATA)
@@ -71,8 +71,9 @@ def count(args):
     for setting in args.settings:
         name, _, value = setting.partition("=")
         env[name] = value
-    folder = mesh_folder(args.out)
-    cases = [(m, float(l)) for m in MESHES for l in args.levels.split(",")]
+    meshes = args.meshes.split(",")
+    folder = mesh_folder(args.out, meshes)
+    cases = [(m, float(l)) for m in meshes for l in args.levels.split(",")]
     with concurrent.futures.ThreadPoolExecutor(args.jobs) as pool:
         results = list(pool.map(lambda c: run_case(folder, args.model, env, *c), cases))
     below = whole = angle = 0
@@ -108,6 +109,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--oracle", action="store_true", help="combine earlier runs' tables instead of running")
     parser.add_argument("--levels", default="0.1,0.2,0.3")
+    parser.add_argument("--meshes", default=",".join(MESHES), help="libcgal-demo mesh names (default: the 22 organic ones)")
     parser.add_argument("--jobs", type=int, default=2)
     parser.add_argument("--out", default=os.path.join(ROOT, "build", "lab"))
     parser.add_argument("words", nargs="+", help="TAG MODEL [NAME=VALUE ...], or with --oracle MODEL TAG [TAG ...]")

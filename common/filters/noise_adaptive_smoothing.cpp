@@ -1,9 +1,9 @@
 #include "filters/noise_adaptive_smoothing.h"
 
 #include "evaluation/gaussian_noise.h"
+#include "mesh/border_neighbours.h"
 #include "mesh/breadth_first_patches.h"
 #include "mesh/mesh_checks.h"
-#include "mesh/border_neighbours.h"
 #include "mesh/tangential_noise.h"
 #include "mesh/vertex_adjacency.h"
 #include "mesh/vertex_normals.h"
@@ -182,7 +182,8 @@ Positions slid_and_unfolded(const Positions& solved, const Positions& v, const P
                             FinishCounts& counts) {
   Positions x = taubin_slide ? taubin_slides(solved, v, v_normals, adjacency)
                              : capped_slides(solved, v, faces, sigma, share, options);
-  if (options.hold_borders) counts.border_held = drop_moves_across_borders(v, v_normals, border, x, kBorderMoveAcross * sigma);
+  if (options.hold_borders)
+    counts.border_held = clamp_moves_across_borders(v, v_normals, border, x, kBorderMoveAcross * sigma);
   counts.unfolded = unfold(x, faces, adjacency);
   return x;
 }
@@ -200,7 +201,8 @@ Positions finish_smoothing(Positions x, const Positions& v, const Faces& faces, 
 // The recorrupted risks of the smoothing at cut-off `mu` with each of `finishes`, on breadth-first
 // patches of a large mesh. False if a copy's solve failed. `v_normals`: v's smoothed vertex normals.
 bool finish_risks(const Positions& v, const Positions& v_normals, const Faces& faces, const VertexAdjacency& adjacency,
-                  const BorderNeighbours& full_border, double sigma, double tangential_share, double mu, double max_error,
+                  const BorderNeighbours& full_border, double sigma, double tangential_share, double mu,
+                  double max_error,
                   const NoiseAdaptiveSmoothingOptions& options, const std::vector<Finish>& finishes,
                   RecorruptedRisks& risks) {
   const bool sample = v.rows() > kPassSampleVertices;
@@ -238,7 +240,8 @@ bool finish_risks(const Positions& v, const Positions& v_normals, const Faces& f
     outputs.clear();
     for (const Finish& finish : finishes) {
       std::optional<Positions>& x = slid[finish.taubin_slide];
-      if (!x) x = slid_and_unfolded(solved, y1, y1_normals, f, a, border, copy_sigma, share, finish.taubin_slide, options, counts);
+      if (!x)
+        x = slid_and_unfolded(solved, y1, y1_normals, f, a, border, copy_sigma, share, finish.taubin_slide, options, counts);
       outputs.push_back(finish_smoothing(*x, y1, f, copy_sigma, finish.normal_pass, options, counts));
     }
     return true;

@@ -47,9 +47,9 @@ BorderNeighbours border_neighbours_among(const BorderNeighbours& border, const s
   return out;
 }
 
-int drop_moves_across_borders(const Positions& from, const Positions& unit_normals, const BorderNeighbours& border,
-                              Positions& x, double limit) {
-  int changed = 0;
+int clamp_moves_across_borders(const Positions& from, const Positions& unit_normals, const BorderNeighbours& border,
+                               Positions& x, double limit) {
+  int clamped = 0;
   for (Eigen::Index i = 0; i < x.rows(); ++i) {
     const auto [a, b] = border[i];
     if (a < 0) continue;
@@ -62,9 +62,9 @@ int drop_moves_across_borders(const Positions& from, const Positions& unit_norma
     if (!(across.squaredNorm() > 0.5)) continue;  // no normal there
     const double move = (x.row(i) - from.row(i)).dot(across);
     x.row(i) -= (move - std::clamp(move, -limit, limit)) * across;
-    ++changed;
+    ++clamped;
   }
-  return changed;
+  return clamped;
 }
 
 }  // namespace hht

@@ -1,7 +1,7 @@
 // The two neighbours of each border vertex along its border: the vertices it shares an edge of
-// one face with. The smoothing lets a border vertex move along its border and along the normal,
-// not across the border (docs/quality.md item 35): the uniform Laplacian's one-sided ring there
-// pulls open borders and the rims of holes inwards.
+// one face with. The smoothing lets a border vertex move freely along its border and along the
+// normal, and across the border only as far as the noise would (docs/quality.md item 35): the
+// uniform Laplacian's one-sided ring there pulls open borders and the rims of holes inwards.
 #pragma once
 
 #include "mesh/mesh_arrays.h"
@@ -26,7 +26,7 @@ BorderNeighbours border_neighbours_among(const BorderNeighbours& border, const s
 // Clamps each border vertex's move from `from` to `x` across the border to at most `limit`: the
 // part within the tangent plane of `unit_normals`, square to the chord between its two border
 // neighbours in `from`. Returns how many border vertices it looked at (those with a direction).
-int drop_moves_across_borders(const Positions& from, const Positions& unit_normals, const BorderNeighbours& border,
-                              Positions& x, double limit);
+int clamp_moves_across_borders(const Positions& from, const Positions& unit_normals, const BorderNeighbours& border,
+                               Positions& x, double limit);
 
 }  // namespace hht

@@ -6,8 +6,8 @@
 #include <gtest/gtest.h>
 #include <wrap/io_trimesh/import_off.h>
 
-#include <filesystem>
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <regex>

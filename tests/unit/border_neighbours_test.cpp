@@ -55,7 +55,7 @@ TEST(BorderNeighbours, OnlyTheMoveAcrossTheBorderIsClamped) {
   x.row(2) += Eigen::RowVector3d(0.3, 0.4, 0.1);
   x.row(22) += Eigen::RowVector3d(0.3, -0.4, 0.1);  // the upper edge: moved out of the sheet
   x.row(12) += Eigen::RowVector3d(0.3, 0.4, 0.1);   // interior
-  EXPECT_EQ(drop_moves_across_borders(m.positions, normals, border, x, 0.1), 16);
+  EXPECT_EQ(clamp_moves_across_borders(m.positions, normals, border, x, 0.1), 16);
   EXPECT_TRUE((x.row(2) - m.positions.row(2)).isApprox(Eigen::RowVector3d(0.3, 0.1, 0.1)));
   EXPECT_TRUE((x.row(22) - m.positions.row(22)).isApprox(Eigen::RowVector3d(0.3, -0.1, 0.1)));
   EXPECT_TRUE((x.row(12) - m.positions.row(12)).isApprox(Eigen::RowVector3d(0.3, 0.4, 0.1)));
