@@ -17,6 +17,8 @@
 #include "reconstruction/biharmonic_low_pass.h"
 #include "filters/spectral_mesh_filter.h"
 #include "filters/guided_normal_denoise.h"
+#include "filters/sd_normal_denoise.h"
+#include "filters/l0_denoise.h"
 #include "filters/feature_preserving_denoise.h"
 #include "filters/noise_adaptive_smoothing.h"
 #include "reconstruction/normal_vertex_update.h"
@@ -27,6 +29,7 @@
 #include "filters/spike_removal.h"
 #include "reconstruction/recorrupted_risk.h"
 #include "mesh/tangential_noise.h"
+#include "mesh/faces_near_creases.h"
 
 #include <Eigen/SparseCholesky>
 
@@ -309,6 +312,18 @@ NoiseAdaptiveSmoothingOptions lab_options() {
   return o;
 }
 
+// The numbers of a comma-separated list in an environment variable (none if it is unset).
+std::vector<double> list_from_env(const char* name) {
+  std::vector<double> values;
+  if (const char* list = std::getenv(name))
+    for (const char* c = list; *c;) {
+      char* end;
+      values.push_back(std::strtod(c, &end));
+      c = *end ? end + 1 : end;
+    }
+  return values;
+}
+
 // The noise estimate the smoothing starts from, sigma / mean edge.
 double estimated_sigma(const Positions& p, const Faces& f) {
   std::string err;
@@ -483,9 +498,25 @@ int main(int argc, char** argv) {
     std::printf("  copy scale %s\n", scale.c_str());
     setenv("LAB_COPYSCALE", scale.c_str(), 1);
   }
+  // LAB_CREASESPLIT=DEG: E_a also over the faces near the clean mesh's creases (a vertex on an edge bent more than DEG) and the rest
+  const std::vector<unsigned char> near_crease =
+      std::getenv("LAB_CREASESPLIT")
+          ? faces_near_creases(dihedral_angles(clean, f), f, n, std::atof(std::getenv("LAB_CREASESPLIT")))
+          : std::vector<unsigned char>();
   auto show = [&](const char* name, const Positions& p) {
     Score s = score(p, clean, f);
     std::printf("  %-28s E_a %6.2f  rms %6.1f  flips %d (%d not folded in clean)\n", name, s.ea, s.rms, s.flips, s.new_flips);
+    if (near_crease.empty()) return;
+    const Positions a = unit_face_normals(p, f), b = unit_face_normals(clean, f);
+    double sum[2] = {0, 0};
+    int count[2] = {0, 0};
+    for (Eigen::Index i = 0; i < f.rows(); ++i) {
+      const int k = near_crease[i] ? 1 : 0;
+      sum[k] += std::acos(std::clamp(a.row(i).dot(b.row(i)), -1.0, 1.0)) * 180 / M_PI;
+      ++count[k];
+    }
+    std::printf("      near creases %d faces E_a %.2f (share of the sum %.2f); elsewhere %d faces E_a %.2f\n", count[1],
+                sum[1] / std::max(1, count[1]), sum[1] / (sum[0] + sum[1]), count[0], sum[0] / std::max(1, count[0]));
   };
   std::printf("%s n=%d level %.2f\n", argv[1], n, level);
   if (argc > 3 && std::string(argv[3]) == "I") {  // the noise estimates only: IMF, and |hinge height| quantiles over |N(0,1)|'s
@@ -1961,6 +1992,48 @@ int main(int argc, char** argv) {
         show(nm, cur);
       }
     }
+    if (std::getenv("LAB_L0R")) {  // experiment: the denoiser against L0 by the recorrupted risk
+      const VertexAdjacency adj = vertex_adjacency(f, n);
+      Positions normals = area_weighted_vertex_normals(noisy, f);
+      for (int sweep = 0; sweep < 3; ++sweep) {
+        Positions next(n, 3);
+        for (int i = 0; i < n; ++i) {
+          Eigen::RowVector3d sum = normals.row(i);
+          for (const int* j = adj.begin(i); j != adj.end(i); ++j) sum += normals.row(*j);
+          next.row(i) = sum.norm() > 0 ? Eigen::RowVector3d(sum / sum.norm()) : Eigen::RowVector3d::Zero();
+        }
+        normals.swap(next);
+      }
+      const double sigma = r.sigma_used * h;
+      NoiseShape shape;
+      shape.tangential_share = std::min(1.0, tangential_noise_share(noisy, normals, adj, sigma));
+      if (shape.tangential_share < 1) shape.unit_normals = normals;
+      const double copy_sigma = sigma * std::sqrt(1 + kRecorruptionScale * kRecorruptionScale);
+      const auto run = [&](const Positions& y1, std::vector<Positions>& outs) {
+        outs.assign(2, Positions());
+        DenoiseOptions c = o;
+        c.noise = copy_sigma / mean_edge_length(y1, f);
+        DenoiseReport cr;
+        std::string e;
+        if (!feature_preserving_denoise(y1, f, c, outs[0], cr, e)) return false;
+        L0DenoiseOptions l;
+        l.dihedral_mean = DihedralMean::Unsigned;
+        return l0_denoise(y1, f, l, outs[1], e);
+      };
+      RecorruptedRisks risks;
+      const int draws = std::getenv("LAB_L0RDRAWS") ? std::atoi(std::getenv("LAB_L0RDRAWS")) : 3;
+      if (recorrupted_risks(noisy, sigma, shape, draws, 7, run, risks)) {
+        const std::vector<double> m = risks.mean();
+        int l0_wins = 0;
+        for (const auto& d : risks.per_draw) l0_wins += d[1] < d[0];
+        std::printf("  L0R share %.3f risk denoise %.6g L0 %.6g (L0 lower by %.3f%%, in %d of %d draws)\n", shape.tangential_share,
+                    m[0], m[1], 100 * (m[0] - m[1]) / m[0], l0_wins, risks.draws());
+      }
+      L0DenoiseOptions l;
+      l.dihedral_mean = DihedralMean::Unsigned;
+      Positions l0;
+      if (l0_denoise(noisy, f, l, l0, err)) show("L0R candidate: L0 unsigned", l0);
+    }
     if (std::getenv("LAB_GUIDED")) {
       Positions g;
       guided_normal_denoise(noisy, f, GuidedNormalDenoiseOptions{}, g, err);
@@ -1978,6 +2051,77 @@ int main(int argc, char** argv) {
       a.vertex_iterations = 10;
       guided_normal_denoise(noisy, f, a, g, err);
       show("guided (authors' scheme)", g);
+      if (std::getenv("LAB_SD")) {  // the SD filter (Zhang et al. 2019) at its authors' DenoisingOptions.txt
+        const auto start = std::chrono::steady_clock::now();
+        Positions sd;
+        if (sd_normal_denoise(noisy, f, SdNormalDenoiseOptions{}, sd, err)) {
+          const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+          show("SD filter (Zhang et al. 2019)", sd);
+          std::printf("  SD filter time %.2f s\n", seconds);
+        } else {
+          std::printf("  SD filter failed: %s\n", err.c_str());
+        }
+        // Its weight tuned per case, as its paper does: LAB_SD_LAMBDAS=0.1,0.3,1 (Lambda; the default 2)
+        for (const double lambda : list_from_env("LAB_SD_LAMBDAS")) {
+          SdNormalDenoiseOptions o;
+          o.lambda = lambda;
+          char name[60];
+          std::snprintf(name, sizeof name, "SD filter, Lambda %g", lambda);
+          if (sd_normal_denoise(noisy, f, o, sd, err)) show(name, sd);
+        }
+      }
+      if (std::getenv("LAB_L0")) {  // L0 minimization at the reference code's defaults, and with the unsigned mean dihedral
+        for (const DihedralMean mean : {DihedralMean::Signed, DihedralMean::Unsigned}) {
+          const bool is_signed = mean == DihedralMean::Signed;
+          L0DenoiseOptions o;
+          o.dihedral_mean = mean;
+          const auto start = std::chrono::steady_clock::now();
+          if (!l0_denoise(noisy, f, o, g, err)) {
+            std::printf("  L0 failed: %s\n", err.c_str());
+            continue;
+          }
+          const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+          show(is_signed ? "L0 (He and Schaefer 2013)" : "L0, unsigned mean dihedral", g);
+          L0Weights w;
+          l0_default_weights(noisy, f, mean, w, err);
+          std::printf("  L0%s time %.2f s (alpha %.4g, lambda %.4g, mean dihedral %.4g rad)\n", is_signed ? "" : " unsigned",
+                      seconds, w.alpha, w.lambda, w.mean_dihedral);
+          if (is_signed) continue;
+          if (std::getenv("LAB_L0THEN")) {  // experiment: a normal filtering round from L0's result
+            const Positions l0 = g;
+            Positions h2;
+            GuidedNormalDenoiseOptions b;
+            b.guidance = NormalGuidance::OwnNormal;
+            b.normal_passes = 2;
+            if (guided_normal_denoise(l0, f, b, h2, err)) show("L0 + 2 own-normal passes", h2);
+            GuidedNormalDenoiseOptions c;
+            c.normal_passes = 2;
+            if (guided_normal_denoise(l0, f, c, h2, err)) show("L0 + 2 guided passes", h2);
+          }
+          if (std::getenv("LAB_L0POLISH")) {  // experiment: L0 from the denoiser's result, lambda from the noisy input or the result
+            for (const double scale : {0.1, 0.3, 1.0}) {
+              L0DenoiseOptions t;
+              t.alpha = w.alpha;
+              t.lambda = scale * w.lambda;
+              char name[80];
+              std::snprintf(name, sizeof name, "denoise + L0 (input's lambda x %g)", scale);
+              if (l0_denoise(out, f, t, g, err)) show(name, g);
+            }
+            L0DenoiseOptions t;
+            t.dihedral_mean = DihedralMean::Unsigned;
+            if (l0_denoise(out, f, t, g, err)) show("denoise + L0 (result's own lambda)", g);
+          }
+          // lambda tuned per case, as its paper does: LAB_L0_SCALES=0.1,1,10 times the unsigned default's
+          for (const double scale : list_from_env("LAB_L0_SCALES")) {
+            L0DenoiseOptions t;
+            t.alpha = w.alpha;
+            t.lambda = scale * w.lambda;
+            char name[60];
+            std::snprintf(name, sizeof name, "L0, lambda x %g", scale);
+            if (l0_denoise(noisy, f, t, g, err)) show(name, g);
+          }
+        }
+      }
     }
     return 0;
   }
@@ -2314,15 +2458,8 @@ int main(int argc, char** argv) {
   }
   if (argc > 3 && std::string(argv[3]) == "a") {
     std::string err;
-    std::vector<double> strengths{1.0};
-    if (const char* list = std::getenv("LAB_STRENGTHS")) {  // e.g. LAB_STRENGTHS=0.5,1,2
-      strengths.clear();
-      for (const char* c = list; *c;) {
-        char* end;
-        strengths.push_back(std::strtod(c, &end));
-        c = *end ? end + 1 : end;
-      }
-    }
+    std::vector<double> strengths = list_from_env("LAB_STRENGTHS");  // e.g. LAB_STRENGTHS=0.5,1,2
+    if (strengths.empty()) strengths = {1.0};
       for (double strength : strengths) {
         NoiseAdaptiveSmoothingOptions o = lab_options();
         o.strength = strength;
