@@ -13,6 +13,8 @@
 #include "filters/bilateral_denoise.h"
 #include "filters/feature_preserving_denoise.h"
 #include "filters/guided_normal_denoise.h"
+#include "filters/l0_denoise.h"
+#include "filters/sd_normal_denoise.h"
 #include "filters/noise_adaptive_smoothing.h"
 #include "filters/nonlocal_means_denoise.h"
 #include "filters/spectral_mesh_filter.h"
@@ -272,6 +274,22 @@ std::vector<Case> entry_points() {
          Positions out;
          std::string e;
          const bool ok = guided_normal_denoise(p, f, o, out, e);
+         return refused_or(ok, e, {out});
+       }},
+      {"L0Denoise", false,
+       [](const Positions& p, const Faces& f) {
+         L0DenoiseOptions o;
+         o.dihedral_mean = DihedralMean::Unsigned;  // the signed mean refuses meshes facing inwards, which the fuzz makes
+         Positions out;
+         std::string e;
+         const bool ok = l0_denoise(p, f, o, out, e);
+         return refused_or(ok, e, {out});
+       }},
+      {"SdNormalDenoise", false,
+       [](const Positions& p, const Faces& f) {
+         Positions out;
+         std::string e;
+         const bool ok = sd_normal_denoise(p, f, {}, out, e);
          return refused_or(ok, e, {out});
        }},
       {"SharpFeatures", false,
