@@ -8,6 +8,7 @@
 #include "mesh/mesh_checks.h"
 #include "evaluation/gaussian_noise.h"
 #include "filters/guided_normal_denoise.h"
+#include "reconstruction/planar_regions.h"
 #include "reconstruction/keep_untouched_vertices.h"
 #include "reconstruction/normal_vertex_update.h"
 
@@ -264,7 +265,19 @@ bool refine_from(const Positions& positions, const Positions& start, const Faces
   result = start;
   if (options.paper_stage && !paper_stage(start, faces, options, result, report, clock, step, error)) return false;
   if (!refine(faces, options, sigma, edge, near_creases, result, report, step, from, 99, error)) return false;
-  if (report.refine_normal_passes > 0 && options.refine_vertex_iterations > 0) clock.done("refinement");
+  if (report.refine_normal_passes > 0 && options.refine_vertex_iterations > 0) {
+    clock.done("refinement");
+    if (options.flatten_planar_regions) {
+      Positions flat;
+      PlanarRegionReport planar;
+      if (!flatten_planar_regions(result, faces, PlanarRegionOptions{}, flat, planar, error)) return false;
+      if (options.refine_unturn) report.refine_unturned_faces += unturn_few_turned_faces(result, faces, 1.0, flat);
+      result.swap(flat);
+      report.planar_regions = planar.regions;
+      report.planar_region_faces = planar.faces;
+      clock.done("planar regions");
+    }
+  }
   step(100, "Done");
   return true;
 }

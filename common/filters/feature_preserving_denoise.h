@@ -183,6 +183,7 @@ struct DenoiseOptions {
   double refine_normal_sigma = 0.25;  // range width of that filter, on unit normals (~15 degrees)
   double refine_smooth_sigma = kRefineSmoothSigma;  // away from creases; at most refine_normal_sigma: one width everywhere
   bool refine_unturn = true;  // faces the refinement turns over against its start stood back up (item 15)
+  bool flatten_planar_regions = true;  // the refined part's planar regions made flat (planar_regions.h, item 36)
   int refine_vertex_iterations = 20;  // vertex update iterations towards the filtered normals
   bool refine_own_normals = true;  // the last round(s), every round when untangled, on the faces' own normals (item 16)
   bool refine_fit_each_pass = true;  // from kNoisePerRound's noise on or untangled, vertices fitted after every pass (item 24)
@@ -231,6 +232,8 @@ struct DenoiseReport {
   double refine_scaled = 1;      // < 1: the refinement's move was scaled down to the noise's RMS
   double refine_near_creases = -1;  // share of the faces given the narrow range width (-1: one width for all)
   int refine_unturned_faces = 0;  // turned over by the refinement against its start, stood back up
+  int planar_regions = 0;        // of the refined mesh, made flat (item 36)
+  int planar_region_faces = 0;   // in them
   int refine_own_normal_rounds = 0;  // rounds done with the range kernel on the faces' own normals
   int untouched_vertices_kept = 0;  // impulsive noise: vertices of exactly flat hinges kept as they were (keep_untouched_vertices.h)
   bool spikes_removed = false;  // impulsive noise read from scattered spikes: the result is the input despiked

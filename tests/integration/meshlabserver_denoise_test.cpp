@@ -48,12 +48,15 @@ TEST(MeshlabserverDenoise, NoisyCubeDenoisedThenCompared) {
   EXPECT_NE(run.log.find("round(s) of 8 normal filtering passes, then 20 vertex update iterations; all on the faces' own "
                          "normals (bilateral normal filtering, range width 0.35)"), std::string::npos) << run.log;
   EXPECT_EQ(run.log.find("guided rounds: range width"), std::string::npos) << run.log;
+  // the six sides made flat (item 36)
+  EXPECT_NE(run.log.find("6 planar regions made flat (100.0% of the faces"), std::string::npos) << run.log;
   const ServerRun before = compare(data_mesh("cube-meshed"), output_path("cube_noisy.ply"), "compare_noisy");
   const ServerRun after = compare(data_mesh("cube-meshed"), output_path("cube_denoised.ply"), "compare_denoised");
   ASSERT_EQ(before.exit_code, 0) << before.log;
   ASSERT_EQ(after.exit_code, 0) << after.log;
   EXPECT_GT(logged(before.log, "E_a"), 0.0);
-  EXPECT_LT(logged(after.log, "E_a"), 0.7 * logged(before.log, "E_a"));
+  // measured 0.17 of the noisy 6.70 degrees; 0.35 without the planar regions made flat
+  EXPECT_LT(logged(after.log, "E_a"), 0.04 * logged(before.log, "E_a")) << logged(after.log, "E_a");
   // the filter's numbers are the library's, on the saved files
   TriMesh cube;
   ASSERT_EQ(vcg::tri::io::ImporterOFF<TriMesh>::Open(cube, data_mesh("cube-meshed").c_str()), 0);
