@@ -412,93 +412,6 @@ std::vector<size_t> flat_region_sizes(const Positions& fn, const Faces& f, doubl
   return sizes;
 }
 
-// Experiment (LAB_PLANESNAP=DEG): regions of faces whose normals stay within DEG of their seed's,
-// grown across edges; a region of 30 or more faces whose vertices a quadric height field fits
-// hardly better than a plane (residual ratio at least LAB_PLANERATIO, 0.8) is taken as planar, its
-// faces given the plane's normal as targets and the vertices fitted to them (the other faces no target).
-Positions snap_planar_regions(const Positions& p, const Faces& f, double degrees, double ratio, int& regions, double& share,
-                               const Positions* clean = nullptr) {
-  const Positions fn = unit_face_normals(p, f);
-  const Positions cn = clean ? unit_face_normals(*clean, f) : Positions();
-  std::map<std::pair<int, int>, std::vector<int>> by_edge;
-  for (Eigen::Index g = 0; g < f.rows(); ++g)
-    for (int k = 0; k < 3; ++k) {
-      const int a = f(g, k), b = f(g, (k + 1) % 3);
-      by_edge[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(g));
-    }
-  std::vector<std::vector<int>> nb(f.rows());
-  for (const auto& [e, fs] : by_edge)
-    if (fs.size() == 2) { nb[fs[0]].push_back(fs[1]); nb[fs[1]].push_back(fs[0]); }
-  const double c = std::cos(degrees * M_PI / 180);
-  std::vector<int> region(f.rows(), -1);
-  Positions targets = Positions::Zero(f.rows(), 3);
-  regions = 0;
-  int snapped_faces = 0;
-  int next_id = 0;
-  for (Eigen::Index s0 = 0; s0 < f.rows(); ++s0) {
-    if (region[s0] >= 0) continue;
-    std::vector<int> q{static_cast<int>(s0)};
-    region[s0] = next_id++;
-    for (size_t k = 0; k < q.size(); ++k)
-      for (int g : nb[q[k]])
-        if (region[g] < 0 && fn.row(g).dot(fn.row(s0)) > c) { region[g] = region[s0]; q.push_back(g); }
-    if (q.size() < 30) continue;
-    std::vector<int> verts;
-    for (int g : q) for (int k = 0; k < 3; ++k) verts.push_back(f(g, k));
-    std::sort(verts.begin(), verts.end());
-    verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
-    Eigen::RowVector3d mean = Eigen::RowVector3d::Zero();
-    for (int v : verts) mean += p.row(v);
-    mean /= verts.size();
-    Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-    for (int v : verts) { const Eigen::Vector3d d = (p.row(v) - mean).transpose(); cov += d * d.transpose(); }
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
-    const Eigen::Vector3d nrm = es.eigenvectors().col(0), u = es.eigenvectors().col(2), w = es.eigenvectors().col(1);
-    // plane residual against a quadric height field's
-    Eigen::MatrixXd A(verts.size(), 6);
-    Eigen::VectorXd h(verts.size());
-    for (size_t i = 0; i < verts.size(); ++i) {
-      const Eigen::Vector3d d = (p.row(verts[i]) - mean).transpose();
-      const double x = d.dot(u), y = d.dot(w);
-      A.row(i) << 1, x, y, x * x, x * y, y * y;
-      h[i] = d.dot(nrm);
-    }
-    const double rp = (h - A.leftCols(3) * A.leftCols(3).colPivHouseholderQr().solve(h)).squaredNorm();
-    const Eigen::VectorXd quad = A.colPivHouseholderQr().solve(h);
-    const double rq = (h - A * quad).squaredNorm();
-    // the quadric's bend over the region: the largest angle between its slopes at the region's vertices and at its centre
-    double bend = 0;
-    for (size_t i = 0; i < verts.size(); ++i) {
-      const double x = A(i, 1), y = A(i, 2);
-      const double gx = 2 * quad[3] * x + quad[4] * y, gy = quad[4] * x + 2 * quad[5] * y;
-      bend = std::max(bend, std::atan(std::hypot(gx, gy)) * 180 / M_PI);
-    }
-    const double max_bend = std::getenv("LAB_PLANEBEND") ? std::atof(std::getenv("LAB_PLANEBEND")) : 1e9;
-    if (std::getenv("LAB_PLANEDUMP"))
-      std::printf("    region %zu faces, %zu vertices: bend %.2f residual ratio %.3f, F %.2f, plane rms %.4f\n", q.size(), verts.size(), bend,
-                  rp > 0 ? std::sqrt(rq / rp) : 0.0, rq > 0 ? ((rp - rq) / 3) / (rq / (verts.size() - 6.0)) : 0.0,
-                  std::sqrt(rp / verts.size()));
-    if (clean) {  // the clean mesh's spread of normals over the region: is it truly flat?
-      Eigen::RowVector3d m = Eigen::RowVector3d::Zero();
-      for (int g : q) m += cn.row(g);
-      m.normalize();
-      double worst = 0;
-      for (int g : q) worst = std::max(worst, std::acos(std::clamp(cn.row(g).dot(m), -1.0, 1.0)) * 180 / M_PI);
-      std::printf("      clean spread %.2f deg\n", worst);
-    }
-    if (rp <= 0 || rq < ratio * ratio * rp || bend > max_bend) continue;
-    Eigen::RowVector3d target = nrm.transpose();
-    Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
-    for (int g : q) sum += fn.row(g);
-    if (sum.dot(target) < 0) target = -target;
-    for (int g : q) targets.row(g) = target;
-    ++regions;
-    snapped_faces += static_cast<int>(q.size());
-  }
-  share = double(snapped_faces) / f.rows();
-  return fit_vertices_to_normals(p, f, targets, 20);
-}
-
 // Share of the faces of `a` whose normal points against the same face's in `b`.
 double turned_share(const Positions& a, const Positions& b, const Faces& f) {
   const Positions na = face_normals(a, f), nb = face_normals(b, f);
@@ -2122,14 +2035,6 @@ int main(int argc, char** argv) {
       l.dihedral_mean = DihedralMean::Unsigned;
       Positions l0;
       if (l0_denoise(noisy, f, l, l0, err)) show("L0R candidate: L0 unsigned", l0);
-    }
-    if (const char* x = std::getenv("LAB_PLANESNAP")) {  // experiment: planar regions of the result snapped
-      int regions = 0;
-      double share = 0;
-      const double ratio = std::getenv("LAB_PLANERATIO") ? std::atof(std::getenv("LAB_PLANERATIO")) : 0.8;
-      const Positions snapped = snap_planar_regions(out, f, std::atof(x), ratio, regions, share, &clean);
-      std::printf("  plane snap: %d regions, %.3f of the faces\n", regions, share);
-      show("denoise + plane snap", snapped);
     }
     if (std::getenv("LAB_GUIDED")) {
       Positions g;
