@@ -1,6 +1,7 @@
 #include "filters/sd_normal_denoise.h"
 
 #include "mesh/corner_table.h"
+#include "mesh/face_geometry.h"
 #include "mesh/face_rings.h"
 #include "mesh/mesh_checks.h"
 #include "reconstruction/closeness_vertex_update.h"
@@ -84,25 +85,9 @@ bool check_options(const SdNormalDenoiseOptions& o, std::string& error) {
   return true;
 }
 
-struct FaceGeometry {
-  Positions normals;  // unit, zero for a degenerate face
-  Positions centroids;
-  Eigen::VectorXd areas;  // over their mean
-};
-
-bool face_geometry(const Positions& p, const Faces& faces, FaceGeometry& g, std::string& error) {
-  const Eigen::Index m = faces.rows();
-  g.normals.resize(m, 3);
-  g.centroids.resize(m, 3);
-  g.areas.resize(m);
-  for (Eigen::Index f = 0; f < m; ++f) {
-    const Eigen::RowVector3d a = p.row(faces(f, 0)), b = p.row(faces(f, 1)), c = p.row(faces(f, 2));
-    const Eigen::RowVector3d x = (b - a).cross(c - a);
-    const double len = x.norm();
-    g.areas[f] = 0.5 * len;
-    g.normals.row(f) = len > 0 ? Eigen::RowVector3d(x / len) : Eigen::RowVector3d::Zero();
-    g.centroids.row(f) = (a + b + c) / 3.0;
-  }
+// The faces' geometry with their areas over the mean (the authors' area weights).
+bool face_geometry_with_unit_mean_area(const Positions& p, const Faces& faces, FaceGeometry& g, std::string& error) {
+  g = face_geometry(p, faces);
   const double mean = g.areas.mean();
   if (!(mean > 0)) {
     error = "all faces are degenerate (zero area)";
@@ -233,7 +218,7 @@ Pairs neighbour_pairs(const Connectivity& c, const Positions& centroids, double 
 bool filter_normals(const Connectivity& c, const Positions& positions, const SdNormalDenoiseOptions& o,
                     Positions& normals, std::string& error) {
   FaceGeometry g;
-  if (!face_geometry(positions, c.faces, g, error)) return false;
+  if (!face_geometry_with_unit_mean_area(positions, c.faces, g, error)) return false;
   double spacing = 0;
   for (const auto& ef : c.edge_faces) spacing += (g.centroids.row(ef[0]) - g.centroids.row(ef[1])).norm();
   spacing /= static_cast<double>(c.edge_faces.size());

@@ -1,6 +1,7 @@
 #include "mesh/sharp_features.h"
 
 #include "mesh/corner_table.h"
+#include "mesh/face_geometry.h"
 #include "cycle/feature_lines.h"
 #include "mesh/face_rings.h"
 #include "mesh/mesh_checks.h"
@@ -66,29 +67,6 @@ bool build_topology(const Faces& faces, int vertex_count, Topology& topo, std::s
   });
   topo.face_faces = face_rings(topo.faces, vertex_count);
   return true;
-}
-
-struct FaceGeometry {
-  Positions normals;    // unit, zero for degenerate faces
-  Positions centroids;
-  Eigen::VectorXd areas;
-};
-
-FaceGeometry face_geometry(const Positions& p, const Faces& faces) {
-  FaceGeometry g;
-  const Eigen::Index nf = faces.rows();
-  g.normals.resize(nf, 3);
-  g.centroids.resize(nf, 3);
-  g.areas.resize(nf);
-  for (Eigen::Index f = 0; f < nf; ++f) {
-    const Eigen::RowVector3d a = p.row(faces(f, 0)), b = p.row(faces(f, 1)), c = p.row(faces(f, 2));
-    const Eigen::RowVector3d n = (b - a).cross(c - a);
-    const double len = n.norm();
-    g.areas[f] = 0.5 * len;
-    g.normals.row(f) = len > 0 ? Eigen::RowVector3d(n / len) : Eigen::RowVector3d::Zero();
-    g.centroids.row(f) = (a + b + c) / 3.0;
-  }
-  return g;
 }
 
 // Guidance of each face (Zhang, Deng, Zhang, Bouaziz, Liu 2015): the mean normal of the most
