@@ -254,6 +254,23 @@ bool show_features_and_finish(const Positions& positions, const Faces& faces, co
   return true;
 }
 
+// The refined `result`'s planar regions made flat (item 36); faces this turns over against the
+// refinement's `start` are stood back up, as the refinement's own are.
+bool flatten_planar_parts(const Positions& start, const Faces& faces, const DenoiseOptions& options, Positions& result,
+                          DenoiseReport& report, StageClock& clock, std::string& error) {
+  if (!options.flatten_planar_regions) return true;
+  Positions flat;
+  PlanarRegionReport planar;
+  if (!flatten_planar_regions(result, faces, PlanarRegionOptions{}, flat, planar, error)) return false;
+  if (planar.regions > 0 && options.refine_unturn)
+    report.refine_unturned_faces += unturn_few_turned_faces(start, faces, 1.0, flat);
+  result.swap(flat);
+  report.planar_regions = planar.regions;
+  report.planar_region_faces = planar.faces;
+  clock.done("planar regions");
+  return true;
+}
+
 // `start` refined into `result`, after the paper's stage when asked for.
 bool refine_from(const Positions& positions, const Positions& start, const Faces& faces, const DenoiseOptions& options,
                  double sigma, double edge, const std::vector<unsigned char>& near_creases, Positions& result,
@@ -267,16 +284,7 @@ bool refine_from(const Positions& positions, const Positions& start, const Faces
   if (!refine(faces, options, sigma, edge, near_creases, result, report, step, from, 99, error)) return false;
   if (report.refine_normal_passes > 0 && options.refine_vertex_iterations > 0) {
     clock.done("refinement");
-    if (options.flatten_planar_regions) {
-      Positions flat;
-      PlanarRegionReport planar;
-      if (!flatten_planar_regions(result, faces, PlanarRegionOptions{}, flat, planar, error)) return false;
-      if (options.refine_unturn) report.refine_unturned_faces += unturn_few_turned_faces(result, faces, 1.0, flat);
-      result.swap(flat);
-      report.planar_regions = planar.regions;
-      report.planar_region_faces = planar.faces;
-      clock.done("planar regions");
-    }
+    if (!flatten_planar_parts(start, faces, options, result, report, clock, error)) return false;
   }
   step(100, "Done");
   return true;
@@ -328,6 +336,7 @@ bool denoise_after_untangling(const Positions& positions, const Faces& faces, co
     clock.done(uncertain ? "refinement" : "refinement tried");
     report.refined_crease_contrast = crease_contrast(refined, faces);
     report.creases_revealed = report.refined_crease_contrast >= kRevealedCreaseContrast;
+    if (uncertain && !flatten_planar_parts(start, faces, options, refined, report, clock, error)) return false;
   }
   if (may_smooth && !report.creases_revealed) {
     const int from = try_refinement || uncertain ? 50 : 40;
