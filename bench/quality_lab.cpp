@@ -312,6 +312,21 @@ NoiseAdaptiveSmoothingOptions lab_options() {
   return o;
 }
 
+// Vertex normals averaged over three rings, as the smoothing's own (noise_adaptive_smoothing.cpp):
+// the tangent planes the recorrupted copies' noise shape is drawn in.
+Positions ring_smoothed_normals(const Positions& p, const Faces& f, const VertexAdjacency& adj) {
+  Positions normals = area_weighted_vertex_normals(p, f), next(p.rows(), 3);
+  for (int sweep = 0; sweep < 3; ++sweep) {
+    for (Eigen::Index i = 0; i < p.rows(); ++i) {
+      Eigen::RowVector3d sum = normals.row(i);
+      for (const int* j = adj.begin(i); j != adj.end(i); ++j) sum += normals.row(*j);
+      next.row(i) = sum.norm() > 0 ? Eigen::RowVector3d(sum / sum.norm()) : Eigen::RowVector3d::Zero();
+    }
+    normals.swap(next);
+  }
+  return normals;
+}
+
 // The numbers of a comma-separated list in an environment variable (none if it is unset).
 std::vector<double> list_from_env(const char* name) {
   std::vector<double> values;
@@ -1753,16 +1768,7 @@ int main(int argc, char** argv) {
     const double copy_sigma = sigma * std::sqrt(1 + kRecorruptionScale * kRecorruptionScale);
     const VertexAdjacency adj = vertex_adjacency(f, n);
     NoiseShape shape;
-    Positions normals = area_weighted_vertex_normals(noisy, f);
-    for (int sweep = 0; sweep < 3; ++sweep) {  // as the smoothing's own (noise_adaptive_smoothing.cpp)
-      Positions next(n, 3);
-      for (int i = 0; i < n; ++i) {
-        Eigen::RowVector3d sum = normals.row(i);
-        for (const int* j = adj.begin(i); j != adj.end(i); ++j) sum += normals.row(*j);
-        next.row(i) = sum.norm() > 0 ? Eigen::RowVector3d(sum / sum.norm()) : Eigen::RowVector3d::Zero();
-      }
-      normals.swap(next);
-    }
+    const Positions normals = ring_smoothed_normals(noisy, f, adj);
     shape.tangential_share = std::getenv("LAB_RTISO") ? 1.0 : std::min(1.0, tangential_noise_share(noisy, normals, adj, sigma * mean_edge_length(noisy, f)));
     if (shape.tangential_share < 1) shape.unit_normals = normals;
     const double edge = mean_edge_length(noisy, f);
@@ -1996,16 +2002,7 @@ int main(int argc, char** argv) {
     }
     if (std::getenv("LAB_L0R")) {  // experiment: the denoiser against L0 by the recorrupted risk
       const VertexAdjacency adj = vertex_adjacency(f, n);
-      Positions normals = area_weighted_vertex_normals(noisy, f);
-      for (int sweep = 0; sweep < 3; ++sweep) {
-        Positions next(n, 3);
-        for (int i = 0; i < n; ++i) {
-          Eigen::RowVector3d sum = normals.row(i);
-          for (const int* j = adj.begin(i); j != adj.end(i); ++j) sum += normals.row(*j);
-          next.row(i) = sum.norm() > 0 ? Eigen::RowVector3d(sum / sum.norm()) : Eigen::RowVector3d::Zero();
-        }
-        normals.swap(next);
-      }
+      const Positions normals = ring_smoothed_normals(noisy, f, adj);
       const double sigma = r.sigma_used * h;
       NoiseShape shape;
       shape.tangential_share = std::min(1.0, tangential_noise_share(noisy, normals, adj, sigma));
@@ -2100,28 +2097,23 @@ int main(int argc, char** argv) {
             c.normal_passes = 2;
             if (guided_normal_denoise(l0, f, c, h2, err)) show("L0 + 2 guided passes", h2);
           }
+          // L0 from `start` with the noisy input's unsigned-mean weights, lambda scaled
+          const auto l0_scaled = [&](const Positions& start, double scale, const char* label) {
+            L0DenoiseOptions t;
+            t.alpha = w.alpha;
+            t.lambda = scale * w.lambda;
+            char name[80];
+            std::snprintf(name, sizeof name, "%s x %g", label, scale);
+            if (l0_denoise(start, f, t, g, err)) show(name, g);
+          };
           if (std::getenv("LAB_L0POLISH")) {  // experiment: L0 from the denoiser's result, lambda from the noisy input or the result
-            for (const double scale : {0.1, 0.3, 1.0}) {
-              L0DenoiseOptions t;
-              t.alpha = w.alpha;
-              t.lambda = scale * w.lambda;
-              char name[80];
-              std::snprintf(name, sizeof name, "denoise + L0 (input's lambda x %g)", scale);
-              if (l0_denoise(out, f, t, g, err)) show(name, g);
-            }
+            for (const double scale : {0.1, 0.3, 1.0}) l0_scaled(out, scale, "denoise + L0 (input's lambda)");
             L0DenoiseOptions t;
             t.dihedral_mean = DihedralMean::Unsigned;
             if (l0_denoise(out, f, t, g, err)) show("denoise + L0 (result's own lambda)", g);
           }
           // lambda tuned per case, as its paper does: LAB_L0_SCALES=0.1,1,10 times the unsigned default's
-          for (const double scale : list_from_env("LAB_L0_SCALES")) {
-            L0DenoiseOptions t;
-            t.alpha = w.alpha;
-            t.lambda = scale * w.lambda;
-            char name[60];
-            std::snprintf(name, sizeof name, "L0, lambda x %g", scale);
-            if (l0_denoise(noisy, f, t, g, err)) show(name, g);
-          }
+          for (const double scale : list_from_env("LAB_L0_SCALES")) l0_scaled(noisy, scale, "L0, lambda");
         }
       }
     }
