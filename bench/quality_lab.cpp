@@ -1834,6 +1834,8 @@ int main(int argc, char** argv) {
     if (std::getenv("LAB_NOOWN")) o.refine_own_normals = false;
     if (std::getenv("LAB_NOFITEACH")) o.refine_fit_each_pass = false;
     if (std::getenv("LAB_NOPLANAR")) o.flatten_planar_regions = false;  // item 36 off
+    if (const char* x = std::getenv("LAB_PLANARSEED")) o.planar_regions.seed_degrees = std::atof(x);  // item 36's thresholds
+    if (const char* x = std::getenv("LAB_PLANARBEND")) o.planar_regions.max_bend_degrees = std::atof(x);
     if (const char* x = std::getenv("LAB_ROUNDS")) o.refine_rounds = std::atoi(x);
     if (std::getenv("LAB_NOUNTANGLE")) o.untangle = false;
     if (std::getenv("LAB_NOBORDERS")) o.hold_borders = false;

@@ -6,7 +6,6 @@
 #include "mesh_adapter.h"
 
 #include "filters/feature_preserving_denoise.h"
-#include "reconstruction/planar_regions.h"
 #include "evaluation/gaussian_noise.h"
 
 #include <vcg/complex/allocate.h>
@@ -299,7 +298,7 @@ bool apply(FilterRun& run) {
       run.log(QString("  %1 planar regions made flat (%2% of the faces: each within %3 degrees of its seed face, bending "
                       "less than %4 degree over the region)")
                   .arg(report.planar_regions).arg(100.0 * report.planar_region_faces / faces.rows(), 0, 'f', 1)
-                  .arg(hht::PlanarRegionOptions{}.seed_degrees).arg(hht::PlanarRegionOptions{}.max_bend_degrees));
+                  .arg(o.planar_regions.seed_degrees).arg(o.planar_regions.max_bend_degrees));
   } else {
     run.log("  no refinement");
   }

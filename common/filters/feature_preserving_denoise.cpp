@@ -261,7 +261,7 @@ bool flatten_planar_parts(const Positions& start, const Faces& faces, const Deno
   if (!options.flatten_planar_regions) return true;
   Positions flat;
   PlanarRegionReport planar;
-  if (!flatten_planar_regions(result, faces, PlanarRegionOptions{}, flat, planar, error)) return false;
+  if (!flatten_planar_regions(result, faces, options.planar_regions, flat, planar, error)) return false;
   if (planar.regions > 0 && options.refine_unturn)
     report.refine_unturned_faces += unturn_few_turned_faces(start, faces, 1.0, flat);
   result.swap(flat);

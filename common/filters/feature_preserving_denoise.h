@@ -29,6 +29,7 @@
 //    small features and creases that the patches blur; from the untangling's smoothing, which
 //    has little noise left, every round is (docs/quality.md item 16); from one round's noise on,
 //    or from the untangled start, the vertices are fitted after every pass (kFitEachPassIterations);
+//  - the refined mesh's planar regions are made flat (planar_regions.h; docs/quality.md item 36);
 //  - surfaces without sharp creases (crease_contrast.h of the smoothed mesh below kNoCreaseContrast,
 //    and its crease lines shorter than kCreaseLines: a finely meshed part's creases are too few
 //    edges for the contrast's percentile, item 28)
@@ -55,6 +56,7 @@
 #include "filters/guided_normal_denoise.h"
 #include "filters/noise_adaptive_smoothing.h"
 #include "filters/spectral_mesh_filter.h"
+#include "reconstruction/planar_regions.h"
 
 namespace hht {
 
@@ -184,6 +186,7 @@ struct DenoiseOptions {
   double refine_smooth_sigma = kRefineSmoothSigma;  // away from creases; at most refine_normal_sigma: one width everywhere
   bool refine_unturn = true;  // faces the refinement turns over against its start stood back up (item 15)
   bool flatten_planar_regions = true;  // the refined part's planar regions made flat (planar_regions.h, item 36)
+  PlanarRegionOptions planar_regions;   // their thresholds (experiments)
   int refine_vertex_iterations = 20;  // vertex update iterations towards the filtered normals
   bool refine_own_normals = true;  // the last round(s), every round when untangled, on the faces' own normals (item 16)
   bool refine_fit_each_pass = true;  // from kNoisePerRound's noise on or untangled, vertices fitted after every pass (item 24)
