@@ -312,21 +312,6 @@ NoiseAdaptiveSmoothingOptions lab_options() {
   return o;
 }
 
-// Vertex normals averaged over three rings, as the smoothing's own (noise_adaptive_smoothing.cpp):
-// the tangent planes the recorrupted copies' noise shape is drawn in.
-Positions ring_smoothed_normals(const Positions& p, const Faces& f, const VertexAdjacency& adj) {
-  Positions normals = area_weighted_vertex_normals(p, f), next(p.rows(), 3);
-  for (int sweep = 0; sweep < 3; ++sweep) {
-    for (Eigen::Index i = 0; i < p.rows(); ++i) {
-      Eigen::RowVector3d sum = normals.row(i);
-      for (const int* j = adj.begin(i); j != adj.end(i); ++j) sum += normals.row(*j);
-      next.row(i) = sum.norm() > 0 ? Eigen::RowVector3d(sum / sum.norm()) : Eigen::RowVector3d::Zero();
-    }
-    normals.swap(next);
-  }
-  return normals;
-}
-
 // The numbers of a comma-separated list in an environment variable (none if it is unset).
 std::vector<double> list_from_env(const char* name) {
   std::vector<double> values;
@@ -1768,7 +1753,7 @@ int main(int argc, char** argv) {
     const double copy_sigma = sigma * std::sqrt(1 + kRecorruptionScale * kRecorruptionScale);
     const VertexAdjacency adj = vertex_adjacency(f, n);
     NoiseShape shape;
-    const Positions normals = ring_smoothed_normals(noisy, f, adj);
+    const Positions normals = smoothed_vertex_normals(noisy, f, adj);
     shape.tangential_share = std::getenv("LAB_RTISO") ? 1.0 : std::min(1.0, tangential_noise_share(noisy, normals, adj, sigma * mean_edge_length(noisy, f)));
     if (shape.tangential_share < 1) shape.unit_normals = normals;
     const double edge = mean_edge_length(noisy, f);
@@ -2004,7 +1989,7 @@ int main(int argc, char** argv) {
     }
     if (std::getenv("LAB_L0R")) {  // experiment: the denoiser against L0 by the recorrupted risk
       const VertexAdjacency adj = vertex_adjacency(f, n);
-      const Positions normals = ring_smoothed_normals(noisy, f, adj);
+      const Positions normals = smoothed_vertex_normals(noisy, f, adj);
       const double sigma = r.sigma_used * h;
       NoiseShape shape;
       shape.tangential_share = std::min(1.0, tangential_noise_share(noisy, normals, adj, sigma));

@@ -51,22 +51,6 @@ int unfold(Positions& x, const Faces& faces, const VertexAdjacency& adjacency) {
   return static_cast<int>(std::count(moved.begin(), moved.end(), 1));
 }
 
-// Vertex normals averaged over a few rings: they only project the part the filter removes onto
-// the surface's normal, and the noisy mesh's own normals are too rough for that.
-Positions smoothed_vertex_normals(const Positions& x, const Faces& faces, const VertexAdjacency& adjacency) {
-  Positions normals = area_weighted_vertex_normals(x, faces), next(x.rows(), 3);
-  for (int sweep = 0; sweep < 3; ++sweep) {
-    for (Eigen::Index i = 0; i < x.rows(); ++i) {
-      Eigen::RowVector3d sum = normals.row(i);
-      for (const int* j = adjacency.begin(i); j != adjacency.end(i); ++j) sum += normals.row(*j);
-      const double length = sum.norm();
-      next.row(i) = length > 0 ? Eigen::RowVector3d(sum / length) : Eigen::RowVector3d::Zero();
-    }
-    normals.swap(next);
-  }
-  return normals;
-}
-
 // No vertex is moved further than `radius` from where it was: the graph filter moves a vertex
 // whose edges are long (a CAD fan) by a fraction of those edges, several mean edges, though the
 // noise displaced it by a few sigma only. Returns how many vertices were held.

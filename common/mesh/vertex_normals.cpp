@@ -45,4 +45,18 @@ Positions unit_face_normals(const Positions& positions, const Faces& faces) {
   return normals;
 }
 
+Positions smoothed_vertex_normals(const Positions& x, const Faces& faces, const VertexAdjacency& adjacency) {
+  Positions normals = area_weighted_vertex_normals(x, faces), next(x.rows(), 3);
+  for (int sweep = 0; sweep < 3; ++sweep) {
+    for (Eigen::Index i = 0; i < x.rows(); ++i) {
+      Eigen::RowVector3d sum = normals.row(i);
+      for (const int* j = adjacency.begin(i); j != adjacency.end(i); ++j) sum += normals.row(*j);
+      const double length = sum.norm();
+      next.row(i) = length > 0 ? Eigen::RowVector3d(sum / length) : Eigen::RowVector3d::Zero();
+    }
+    normals.swap(next);
+  }
+  return normals;
+}
+
 }  // namespace hht

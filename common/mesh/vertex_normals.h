@@ -3,12 +3,18 @@
 #pragma once
 
 #include "mesh/mesh_arrays.h"
+#include "mesh/vertex_adjacency.h"
 
 #include <vector>
 
 namespace hht {
 
 Positions area_weighted_vertex_normals(const Positions& positions, const Faces& faces);
+
+// Those normals averaged over three rings (each sweep a vertex's and its neighbours' mean,
+// normalised): the surface's normal where the noisy mesh's own normals are too rough, as the
+// smoothing needs to split a move into its normal and tangential parts.
+Positions smoothed_vertex_normals(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency);
 
 // The same sums, unnormalised (twice the incident area along the normal): what a face is
 // folded against, in the flip guard and in the evaluation's count of faces turned over.
