@@ -503,6 +503,24 @@ int main(int argc, char** argv) {
       std::getenv("LAB_CREASESPLIT")
           ? faces_near_creases(dihedral_angles(clean, f), f, n, std::atof(std::getenv("LAB_CREASESPLIT")))
           : std::vector<unsigned char>();
+  // LAB_CREASEANGLES=1 (with LAB_CREASESPLIT): each face's class by the sharpest clean crease at
+  // its vertices, to tell shallow creases from right-angled ones
+  constexpr int kCreaseClasses = 5;
+  std::vector<unsigned char> crease_class;
+  if (!near_crease.empty() && std::getenv("LAB_CREASEANGLES")) {
+    std::vector<double> sharpest(n, 0.0);
+    for (const DihedralAngle& d : dihedral_angles(clean, f)) {
+      const double deg = d.radians * 180 / M_PI;
+      if (deg <= std::atof(std::getenv("LAB_CREASESPLIT"))) continue;
+      sharpest[d.a] = std::max(sharpest[d.a], deg);
+      sharpest[d.b] = std::max(sharpest[d.b], deg);
+    }
+    crease_class.resize(f.rows());
+    for (Eigen::Index i = 0; i < f.rows(); ++i) {
+      const double deg = std::max({sharpest[f(i, 0)], sharpest[f(i, 1)], sharpest[f(i, 2)]});
+      crease_class[i] = deg <= 0 ? 0 : deg <= 60 ? 1 : deg <= 80 ? 2 : deg <= 100 ? 3 : 4;
+    }
+  }
   auto show = [&](const char* name, const Positions& p) {
     Score s = score(p, clean, f);
     std::printf("  %-28s E_a %6.2f  rms %6.1f  flips %d (%d not folded in clean)\n", name, s.ea, s.rms, s.flips, s.new_flips);
@@ -517,6 +535,17 @@ int main(int argc, char** argv) {
     }
     std::printf("      near creases %d faces E_a %.2f (share of the sum %.2f); elsewhere %d faces E_a %.2f\n", count[1],
                 sum[1] / std::max(1, count[1]), sum[1] / (sum[0] + sum[1]), count[0], sum[0] / std::max(1, count[0]));
+    if (!crease_class.empty()) {  // LAB_CREASEANGLES: the faces by the sharpest clean crease at their vertices
+      double class_sum[kCreaseClasses] = {0};
+      int class_count[kCreaseClasses] = {0};
+      for (Eigen::Index i = 0; i < f.rows(); ++i) {
+        class_sum[crease_class[i]] += std::acos(std::clamp(a.row(i).dot(b.row(i)), -1.0, 1.0)) * 180 / M_PI;
+        ++class_count[crease_class[i]];
+      }
+      std::printf("      by crease angle (none/30-60/60-80/80-100/100+ degrees): faces, E_a");
+      for (int k = 0; k < kCreaseClasses; ++k) std::printf(" %d %.2f;", class_count[k], class_sum[k] / std::max(1, class_count[k]));
+      std::printf("\n");
+    }
   };
   std::printf("%s n=%d level %.2f\n", argv[1], n, level);
   if (argc > 3 && std::string(argv[3]) == "I") {  // the noise estimates only: IMF, and |hinge height| quantiles over |N(0,1)|'s
@@ -1881,6 +1910,14 @@ int main(int argc, char** argv) {
                   r.sigma_used, r.refine_rounds, r.refine_normal_passes, double(r.flipped_faces) / f.rows(), r.refine_scaled, int(r.creases_revealed),
                   r.refined_crease_contrast);
     show(name, out);
+    if (std::getenv("LAB_CREASEORACLE") && !near_crease.empty()) {  // the clean normals as the vertex update's targets
+      const Positions own = unit_face_normals(out, f), truth = unit_face_normals(clean, f);
+      Positions targets = own;
+      for (Eigen::Index i = 0; i < f.rows(); ++i)
+        if (near_crease[i]) targets.row(i) = truth.row(i);
+      show("O clean normals near creases", fit_vertices_to_normals(out, f, targets, 20));
+      show("O clean normals everywhere", fit_vertices_to_normals(out, f, truth, 20));
+    }
     const std::vector<unsigned char> folded_out = folded_faces(out, f);
     const int out_folded = static_cast<int>(std::count(folded_out.begin(), folded_out.end(), 1));
     std::printf("  planar regions %d, %.3f of the faces\n", r.planar_regions, double(r.planar_region_faces) / f.rows());
