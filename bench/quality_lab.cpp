@@ -387,7 +387,13 @@ NoiseAdaptiveSmoothingOptions untangling_options(double sigma) {
 
 // Near-flat regions: grown over shared (manifold) edges from each face not yet taken, holding the
 // faces whose unit normal `fn` stays within `degrees` of the seed's; their sizes in faces.
+std::vector<int> flat_region_labels(const Positions& fn, const Faces& f, double degrees, std::vector<size_t>& sizes);
 std::vector<size_t> flat_region_sizes(const Positions& fn, const Faces& f, double degrees) {
+  std::vector<size_t> sizes;
+  flat_region_labels(fn, f, degrees, sizes);
+  return sizes;
+}
+std::vector<int> flat_region_labels(const Positions& fn, const Faces& f, double degrees, std::vector<size_t>& sizes) {
   std::map<std::pair<int, int>, std::vector<int>> by_edge;
   for (Eigen::Index g = 0; g < f.rows(); ++g)
     for (int k = 0; k < 3; ++k) {
@@ -399,7 +405,7 @@ std::vector<size_t> flat_region_sizes(const Positions& fn, const Faces& f, doubl
     if (fs.size() == 2) { nb[fs[0]].push_back(fs[1]); nb[fs[1]].push_back(fs[0]); }
   const double c = std::cos(degrees * M_PI / 180);
   std::vector<int> region(f.rows(), -1);
-  std::vector<size_t> sizes;
+  sizes.clear();
   for (Eigen::Index s0 = 0; s0 < f.rows(); ++s0) {
     if (region[s0] >= 0) continue;
     std::vector<int> q{static_cast<int>(s0)};
@@ -409,7 +415,7 @@ std::vector<size_t> flat_region_sizes(const Positions& fn, const Faces& f, doubl
         if (region[g] < 0 && fn.row(g).dot(fn.row(s0)) > c) { region[g] = region[s0]; q.push_back(g); }
     sizes.push_back(q.size());
   }
-  return sizes;
+  return region;
 }
 
 // Share of the faces of `a` whose normal points against the same face's in `b`.
@@ -1988,6 +1994,42 @@ int main(int argc, char** argv) {
         for (size_t z : flat_region_sizes(fn, f, deg)) if (z >= 30) in_large += z;
         std::printf("  planar share (%.0f deg, regions of 30+ faces): %.3f\n", deg, double(in_large) / f.rows());
       }
+    }
+    if (const char* minimum = std::getenv("LAB_PLANESIGMA")) {  // experiment: the noise read off the result's flat regions, on the noisy positions
+      std::vector<size_t> sizes;
+      const std::vector<int> label = flat_region_labels(face_normals(out, f), f, 3.0, sizes);
+      std::vector<std::vector<int>> members(sizes.size());
+      for (Eigen::Index g = 0; g < f.rows(); ++g)
+        if (sizes[label[g]] >= static_cast<size_t>(std::atoi(minimum)))
+          for (int k = 0; k < 3; ++k) members[label[g]].push_back(f(g, k));
+      double rss = 0, dof = 0;
+      int regions = 0, verts = 0;
+      for (std::vector<int>& m : members) {
+        std::sort(m.begin(), m.end());
+        m.erase(std::unique(m.begin(), m.end()), m.end());
+        if (m.size() < 6) continue;
+        Eigen::RowVector3d mean = Eigen::RowVector3d::Zero();
+        for (int v : m) mean += noisy.row(v);
+        mean /= double(m.size());
+        Eigen::Matrix3d sc = Eigen::Matrix3d::Zero();
+        for (int v : m) sc += (noisy.row(v) - mean).transpose() * (noisy.row(v) - mean);
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(sc);
+        rss += es.eigenvalues()[0];
+        dof += double(m.size()) - 3;
+        ++regions;
+        verts += int(m.size());
+      }
+      double edge = 0;
+      int edges = 0;
+      for (Eigen::Index g = 0; g < f.rows(); ++g)
+        for (int k = 0; k < 3; ++k) { edge += (noisy.row(f(g, k)) - noisy.row(f(g, (k + 1) % 3))).norm(); ++edges; }
+      edge /= std::max(1, edges);
+      std::vector<unsigned char> covered(n, 0);
+      for (const std::vector<int>& m : members)
+        if (m.size() >= 6)
+          for (int v : m) covered[v] = 1;
+      verts = int(std::count(covered.begin(), covered.end(), 1));
+      std::printf("  plane sigma %.4f (regions %d, vertices %d of %d)\n", dof > 0 ? std::sqrt(rss / dof) / edge : 0.0, regions, verts, n);
     }
     if (std::getenv("LAB_ROUTESMOOTH")) {  // the smoothing the route would give, at the denoiser's noise level
       NoiseAdaptiveSmoothingOptions so;
