@@ -1856,6 +1856,8 @@ int main(int argc, char** argv) {
     if (std::getenv("LAB_NOPLANAR")) o.flatten_planar_regions = false;  // item 36 off
     if (const char* x = std::getenv("LAB_PLANARSEED")) o.planar_regions.seed_degrees = std::atof(x);  // item 36's thresholds
     if (const char* x = std::getenv("LAB_PLANARBEND")) o.planar_regions.max_bend_degrees = std::atof(x);
+    if (const char* x = std::getenv("LAB_PLANARITS")) o.planar_regions.max_vertex_iterations = std::atoi(x);  // item 37's cap
+    if (const char* x = std::getenv("LAB_PLANARSETTLED")) o.planar_regions.settled = std::atof(x);
     if (const char* x = std::getenv("LAB_ROUNDS")) o.refine_rounds = std::atoi(x);
     if (std::getenv("LAB_NOUNTANGLE")) o.untangle = false;
     if (std::getenv("LAB_NOBORDERS")) o.hold_borders = false;
@@ -1926,7 +1928,8 @@ int main(int argc, char** argv) {
     }
     const std::vector<unsigned char> folded_out = folded_faces(out, f);
     const int out_folded = static_cast<int>(std::count(folded_out.begin(), folded_out.end(), 1));
-    std::printf("  planar regions %d, %.3f of the faces\n", r.planar_regions, double(r.planar_region_faces) / f.rows());
+    std::printf("  planar regions %d, %.3f of the faces, %d fit iterations\n", r.planar_regions, double(r.planar_region_faces) / f.rows(),
+                r.planar_fit_iterations);
     std::printf("  item 17: smoothing move %.3f noise RMS, folded %.4f, distorts %d (weight %.2f); result folded %.4f\n", r.smoothing_move,
                 double(r.folded_faces) / f.rows(), int(r.smoothing_distorts()), r.distort_weight, double(out_folded) / f.rows());
     {  // how white the removed part is: its correlation across edges (normal part, and 3D)

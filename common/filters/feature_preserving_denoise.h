@@ -237,6 +237,7 @@ struct DenoiseReport {
   int refine_unturned_faces = 0;  // turned over by the refinement against its start, stood back up
   int planar_regions = 0;        // of the refined mesh, made flat (item 36)
   int planar_region_faces = 0;   // in them
+  int planar_fit_iterations = 0;  // of the vertex update that made them flat (item 37)
   int refine_own_normal_rounds = 0;  // rounds done with the range kernel on the faces' own normals
   int untouched_vertices_kept = 0;  // impulsive noise: vertices of exactly flat hinges kept as they were (keep_untouched_vertices.h)
   bool spikes_removed = false;  // impulsive noise read from scattered spikes: the result is the input despiked

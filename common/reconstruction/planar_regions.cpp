@@ -90,7 +90,17 @@ bool flatten_planar_regions(const Positions& positions, const Faces& faces, cons
     ++report.regions;
     report.faces += static_cast<int>(region.size());
   }
-  result = report.regions > 0 ? fit_vertices_to_normals(positions, faces, targets, options.vertex_iterations) : positions;
+  result = positions;
+  if (report.regions == 0 || options.vertex_iterations <= 0) return true;
+  double first_move = -1;
+  for (int done = 0; done < std::max(options.vertex_iterations, options.max_vertex_iterations); done += options.vertex_iterations) {
+    Positions next = fit_vertices_to_normals(result, faces, targets, options.vertex_iterations);
+    const double move = (next - result).rowwise().squaredNorm().sum();
+    result.swap(next);
+    ++report.fit_steps;
+    if (first_move < 0) first_move = move;
+    if (move <= options.settled * options.settled * first_move) break;
+  }
   return true;
 }
 
