@@ -296,9 +296,10 @@ bool apply(FilterRun& run) {
       run.log(QString("  %1 faces the refinement turned over against its start stood back up").arg(report.refine_unturned_faces));
     if (report.planar_regions > 0)
       run.log(QString("  %1 planar regions made flat (%2% of the faces: each within %3 degrees of its seed face, bending "
-                      "at most %4 degree over the region)")
+                      "at most %4 degree over the region; the vertices fitted in %5 iterations)")
                   .arg(report.planar_regions).arg(100.0 * report.planar_region_faces / faces.rows(), 0, 'f', 1)
-                  .arg(o.planar_regions.seed_degrees).arg(o.planar_regions.max_bend_degrees));
+                  .arg(o.planar_regions.seed_degrees).arg(o.planar_regions.max_bend_degrees)
+                  .arg(report.planar_fit_iterations));
   } else {
     run.log("  no refinement");
   }

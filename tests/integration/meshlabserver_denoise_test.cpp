@@ -11,6 +11,7 @@
 #include <fstream>
 #include <map>
 #include <regex>
+#include <cstring>
 #include <string>
 #include <utility>
 #include <vector>
@@ -50,6 +51,10 @@ TEST(MeshlabserverDenoise, NoisyCubeDenoisedThenCompared) {
   EXPECT_EQ(run.log.find("guided rounds: range width"), std::string::npos) << run.log;
   // the six sides made flat (item 36)
   EXPECT_NE(run.log.find("6 planar regions made flat (100.0% of the faces"), std::string::npos) << run.log;
+  // and their vertices fitted until the fit settles, past its first step of 20 iterations (item 37)
+  const size_t fitted = run.log.find("the vertices fitted in ");
+  ASSERT_NE(fitted, std::string::npos) << run.log;
+  EXPECT_GT(std::atoi(run.log.c_str() + fitted + std::strlen("the vertices fitted in ")), 20) << run.log;
   const ServerRun before = compare(data_mesh("cube-meshed"), output_path("cube_noisy.ply"), "compare_noisy");
   const ServerRun after = compare(data_mesh("cube-meshed"), output_path("cube_denoised.ply"), "compare_denoised");
   ASSERT_EQ(before.exit_code, 0) << before.log;
