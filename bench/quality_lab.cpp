@@ -2006,7 +2006,8 @@ int main(int argc, char** argv) {
         if (sizes[label[g]] >= static_cast<size_t>(std::atoi(minimum)))
           for (int k = 0; k < 3; ++k) members[label[g]].push_back(f(g, k));
       double rss = 0, dof = 0;
-      int regions = 0, verts = 0;
+      int regions = 0;
+      std::vector<unsigned char> covered(n, 0);
       for (std::vector<int>& m : members) {
         std::sort(m.begin(), m.end());
         m.erase(std::unique(m.begin(), m.end()), m.end());
@@ -2016,23 +2017,14 @@ int main(int argc, char** argv) {
         mean /= double(m.size());
         Eigen::Matrix3d sc = Eigen::Matrix3d::Zero();
         for (int v : m) sc += (noisy.row(v) - mean).transpose() * (noisy.row(v) - mean);
-        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(sc);
-        rss += es.eigenvalues()[0];
+        rss += Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(sc).eigenvalues()[0];
         dof += double(m.size()) - 3;
         ++regions;
-        verts += int(m.size());
+        for (int v : m) covered[v] = 1;
       }
-      double edge = 0;
-      int edges = 0;
-      for (Eigen::Index g = 0; g < f.rows(); ++g)
-        for (int k = 0; k < 3; ++k) { edge += (noisy.row(f(g, k)) - noisy.row(f(g, (k + 1) % 3))).norm(); ++edges; }
-      edge /= std::max(1, edges);
-      std::vector<unsigned char> covered(n, 0);
-      for (const std::vector<int>& m : members)
-        if (m.size() >= 6)
-          for (int v : m) covered[v] = 1;
-      verts = int(std::count(covered.begin(), covered.end(), 1));
-      std::printf("  plane sigma %.4f (regions %d, vertices %d of %d)\n", dof > 0 ? std::sqrt(rss / dof) / edge : 0.0, regions, verts, n);
+      const double plane_sigma = dof > 0 ? std::sqrt(rss / dof) / mean_edge_length(noisy, f) : 0.0;
+      std::printf("  plane sigma %.4f (regions %d, vertices %ld of %d)\n", plane_sigma, regions,
+                  long(std::count(covered.begin(), covered.end(), 1)), n);
     }
     if (std::getenv("LAB_ROUTESMOOTH")) {  // the smoothing the route would give, at the denoiser's noise level
       NoiseAdaptiveSmoothingOptions so;

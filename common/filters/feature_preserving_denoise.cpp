@@ -267,7 +267,7 @@ bool flatten_planar_parts(const Positions& start, const Faces& faces, const Deno
   result.swap(flat);
   report.planar_regions = planar.regions;
   report.planar_region_faces = planar.faces;
-  report.planar_fit_iterations = planar.fit_steps * options.planar_regions.vertex_iterations;
+  report.planar_fit_iterations = planar.fit_iterations;
   clock.done("planar regions");
   return true;
 }

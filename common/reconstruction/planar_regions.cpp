@@ -97,7 +97,7 @@ bool flatten_planar_regions(const Positions& positions, const Faces& faces, cons
     Positions next = fit_vertices_to_normals(result, faces, targets, options.vertex_iterations);
     const double move = (next - result).rowwise().squaredNorm().sum();
     result.swap(next);
-    ++report.fit_steps;
+    report.fit_iterations += options.vertex_iterations;
     if (first_move < 0) first_move = move;
     if (move <= options.settled * options.settled * first_move) break;
   }

@@ -30,7 +30,7 @@ struct PlanarRegionOptions {
 struct PlanarRegionReport {
   int regions = 0;  // made flat
   int faces = 0;    // in them
-  int fit_steps = 0;  // steps of the vertex update done
+  int fit_iterations = 0;  // of the vertex update
 };
 
 // Fails, leaving `result` as it was, when the faces do not form an edge-manifold mesh over the

@@ -82,7 +82,7 @@ TEST(PlanarRegions, FlattensALowBumpAcrossARegion) {
   std::string error;
   ASSERT_TRUE(flatten_planar_regions(m.positions, m.faces, {}, out, report, error)) << error;
   EXPECT_EQ(report.regions, 1);
-  EXPECT_GT(report.fit_steps, 1);
+  EXPECT_GT(report.fit_iterations, 20);
   const Eigen::VectorXd z = out.col(2);
   EXPECT_LT(z.maxCoeff() - z.minCoeff(), height / 3);
 }
