@@ -100,9 +100,11 @@ namespace {
 QString estimate_source_text(const hht::NoiseEstimate& e) {
   if (hht::may_be_surface_detail(e))
     return QString("estimated from the finest IMF; clean meshes read up to %1% from their own detail at the scale of "
-                   "their edges, which no estimate tells from noise: if this mesh had little or no noise, undo and "
-                   "give noisePercent")
-        .arg(100 * hht::kCleanDetailReads, 0, 'f', 0);
+                   "their edges, which no estimate tells from noise; of this reading %2% is surely noise (what the "
+                   "finest IMF holds beyond the most such detail the second allows): if this mesh had little or no "
+                   "noise, undo and give noisePercent")
+        .arg(100 * hht::kCleanDetailReads, 0, 'f', 0)
+        .arg(100 * e.surely_noise_sigma / e.mean_edge, 0, 'f', 1);
   if (e.scattered_impulsive())
     return QString("estimated: impulsive noise, %1 vertices stand off their one-rings far beyond the heights around "
                    "them (%2% of the vertices); the finest IMF read %3%")

@@ -23,6 +23,12 @@ double median(std::vector<double> v) {
   return *mid;
 }
 
+double median_absolute_deviation(std::vector<double> v) {
+  const double centre = median(v);
+  for (double& x : v) x = std::abs(x - centre);
+  return median(std::move(v));
+}
+
 }  // namespace
 
 double folded_normal_quantile(double q) {
@@ -64,19 +70,20 @@ bool estimate_noise(const Positions& positions, const Faces& faces, const Hamilt
   const VertexAdjacency adjacency = vertex_adjacency(faces, n);
   const Eigen::VectorXd h = one_ring_heights(positions, faces, adjacency);
 
-  std::vector<double> finest;
+  std::vector<double> finest, second;
   double inverse_valence = 0;
   int interior = 0;
   const auto segments = signals_along_cycle(cycle, h);
   for (size_t s = 0; s < segments.size(); ++s) {
     EmdOptions o = emd_options;
-    o.max_imfs = 1;
+    o.max_imfs = 2;
     const EmdResult e = emd(segments[s], o);
     if (e.imfs.empty()) continue;
     for (size_t t = 0; t < segments[s].size(); ++t) {
       const int v = cycle.order[cycle.segment_begin[s] + static_cast<int>(t)];
       if (adjacency.boundary[v] || adjacency.valence(v) == 0) continue;
       finest.push_back(e.imfs[0][t]);
+      if (e.imfs.size() > 1) second.push_back(e.imfs[1][t]);
       inverse_valence += 1.0 / static_cast<double>(adjacency.valence(v));
       ++interior;
     }
@@ -87,9 +94,12 @@ bool estimate_noise(const Positions& positions, const Faces& faces, const Hamilt
   double squares = 0;
   for (double x : finest) squares += (x - centre) * (x - centre);
   out.imf_rms_sigma = std::sqrt(squares / static_cast<double>(finest.size())) / std::sqrt(1.0 + inverse_valence / interior) / kImf1Share;
-  for (double& x : finest) x = std::abs(x - centre);
-  const double spread = median(finest) / 0.6745;
+  const double spread = median_absolute_deviation(finest) / 0.6745;
   out.imf_sigma = out.sigma = spread / std::sqrt(1.0 + inverse_valence / interior) / kImf1Share;
+  const double second_spread = second.empty() ? 0 : median_absolute_deviation(second) / 0.6745;
+  const double detail = kDetailImfRatio * second_spread, noise_left = 1 - std::pow(kDetailImfRatio * kNoiseImf2Share, 2);
+  out.surely_noise_sigma = std::sqrt(std::max(0.0, spread * spread - detail * detail) / noise_left) /
+                           std::sqrt(1.0 + inverse_valence / interior) / kImf1Share;
 
   std::vector<double> hinges = hinge_heights(positions, faces, adjacency);
   if (static_cast<int>(hinges.size()) < kMinHinges) return true;

@@ -56,6 +56,7 @@ struct NoiseEstimate {
   int samples = 0;           // IMF 1 samples the MAD was taken over
   double imf_sigma = 0;      // the finest IMF's estimate, before the cap
   double imf_rms_sigma = 0;  // the same from the IMF's RMS instead of its MAD
+  double surely_noise_sigma = 0;  // a lower bound on sigma from IMFs 1 and 2 (kDetailImfRatio; 0: none surely)
   double hinge_sigma = 0;    // the flat hinges' estimate (0 on a mesh with fewer than kMinHinges)
   FlatHingeSpikes spikes;    // vertices standing off flat surroundings (role left empty)
   double spike_sigma = 0;    // the spikes' RMS one-ring height (length unit)
@@ -80,6 +81,19 @@ constexpr double kNoiseFree = 1e-4;
 constexpr double kHingeQuantile = 0.1;
 constexpr double kFlatHingeBound = 2.5;
 constexpr int kMinHinges = 50;
+
+// A lower bound on the noise, for the log (ours; docs/quality.md item 38): where an estimate may be
+// the mesh's own detail, how much of it is surely noise. Noise puts nearly all of its height signal
+// into IMF 1: IMF 2's spread (MAD) is kNoiseImf2Share of IMF 1's (bunny00, camel, homer at 10-20%).
+// A clean mesh's own detail spreads over both: IMF 1's spread over IMF 2's is at most
+// kDetailImfRatio on libcgal-demo's clean meshes (femur 1.68, armadillo 1.66, bull 1.61, most
+// 0.3-1.4). With s1, s2 the spreads, r = kDetailImfRatio and c = kNoiseImf2Share, IMF 1 holds at
+// least sqrt(max(0, s1^2 - r^2 s2^2) / (1 - r^2 c^2)) of noise: 0 on clean coarse meshes, 0-0.4 of
+// the estimate at 2% noise, 0.5-0.9 at 10%, about all of it beyond. It is no estimate (a regular
+// mesh at 5% can read 0) and decides nothing: leaving the mesh as it is where it reads little
+// was measured and not kept (it left the plugin's own default noise on some meshes).
+constexpr double kDetailImfRatio = 1.7;
+constexpr double kNoiseImf2Share = 0.39;
 
 // Clean meshes without flat parts read up to this (sigma / mean edge) from their own detail at the
 // edge scale: b9_mesh 0.140, bones 0.102, femur 0.102, bull 0.090 (docs/quality.md, "Goals not

@@ -4,6 +4,8 @@
 #include "evaluation/denoise_metrics.h"
 
 #include <gtest/gtest.h>
+
+#include <regex>
 #include <wrap/io_trimesh/import_off.h>
 
 #include <filesystem>
@@ -127,6 +129,11 @@ TEST(MeshlabserverHht, CleanIrregularMeshKeepsEveryFaceTheRightWayUp) {
     mesh_to_arrays(out, q, g);
     EXPECT_EQ(flipped_faces(q, p, f), 0) << script;
   }
+  // the log says the estimate may be bull's own detail, and that none of it is surely noise (item 38)
+  const ServerRun run = run_meshlabserver(data_mesh("bull"), resource("smooth.mlx"), "clean_bull_log");
+  std::smatch surely;
+  ASSERT_TRUE(std::regex_search(run.log, surely, std::regex("of this reading ([0-9.]+)% is surely noise"))) << run.log;
+  EXPECT_LT(std::stod(surely[1]), 1.0) << run.log;
 }
 
 TEST(MeshlabserverHht, BadInputLeavesNothingBehind) {
