@@ -100,9 +100,9 @@ namespace {
 QString estimate_source_text(const hht::NoiseEstimate& e) {
   if (hht::may_be_surface_detail(e))
     return QString("estimated from the finest IMF; clean meshes read up to %1% from their own detail at the scale of "
-                   "their edges, which no estimate tells from noise; of this reading %2% is surely noise (what the "
-                   "finest IMF holds beyond the most such detail the second allows): if this mesh had little or no "
-                   "noise, undo and give noisePercent")
+                   "their edges, which no estimate tells from noise; the noise is at least %2% (a lower bound: what the "
+                   "finest IMF holds beyond the most such detail the second IMF allows): if this mesh had little or "
+                   "no noise, undo and give noisePercent")
         .arg(100 * hht::kCleanDetailReads, 0, 'f', 0)
         .arg(100 * e.surely_noise_sigma / e.mean_edge, 0, 'f', 1);
   if (e.scattered_impulsive())
