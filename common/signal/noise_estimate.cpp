@@ -98,7 +98,8 @@ bool estimate_noise(const Positions& positions, const Faces& faces, const Hamilt
   out.imf_sigma = out.sigma = spread / std::sqrt(1.0 + inverse_valence / interior) / kImf1Share;
   const double second_spread = second.empty() ? 0 : median_absolute_deviation(second) / 0.6745;
   const double detail = kDetailImfRatio * second_spread, noise_left = 1 - std::pow(kDetailImfRatio * kNoiseImf2Share, 2);
-  out.surely_noise_sigma = std::sqrt(std::max(0.0, spread * spread - detail * detail) / noise_left) /
+  // at most IMF 1's own reading: an IMF 2 quieter than noise alone leaves it (short segments have none)
+  out.surely_noise_sigma = std::min(spread, std::sqrt(std::max(0.0, spread * spread - detail * detail) / noise_left)) /
                            std::sqrt(1.0 + inverse_valence / interior) / kImf1Share;
 
   std::vector<double> hinges = hinge_heights(positions, faces, adjacency);

@@ -88,7 +88,7 @@ constexpr int kMinHinges = 50;
 // A clean mesh's own detail spreads over both: IMF 1's spread over IMF 2's is at most
 // kDetailImfRatio on libcgal-demo's clean meshes (femur 1.68, armadillo 1.66, bull 1.61, most
 // 0.3-1.4). With s1, s2 the spreads, r = kDetailImfRatio and c = kNoiseImf2Share, IMF 1 holds at
-// least sqrt(max(0, s1^2 - r^2 s2^2) / (1 - r^2 c^2)) of noise: 0 on clean coarse meshes, 0-0.4 of
+// least sqrt(max(0, s1^2 - r^2 s2^2) / (1 - r^2 c^2)) of noise, and at most s1: 0 on clean coarse meshes, 0-0.4 of
 // the estimate at 2% noise, 0.5-0.9 at 10%, about all of it beyond. It is no estimate (a regular
 // mesh at 5% can read 0) and decides nothing: leaving the mesh as it is where it reads little
 // was measured and not kept (it left the plugin's own default noise on some meshes).
