@@ -93,14 +93,16 @@ bool estimate_noise(const Positions& positions, const Faces& faces, const Hamilt
   const double centre = median(finest);
   double squares = 0;
   for (double x : finest) squares += (x - centre) * (x - centre);
-  out.imf_rms_sigma = std::sqrt(squares / static_cast<double>(finest.size())) / std::sqrt(1.0 + inverse_valence / interior) / kImf1Share;
+  // the height noise's standard deviation over sigma (see the header)
+  const double height_per_sigma = std::sqrt(1.0 + inverse_valence / interior);
+  out.imf_rms_sigma = std::sqrt(squares / static_cast<double>(finest.size())) / height_per_sigma / kImf1Share;
   const double spread = median_absolute_deviation(finest) / 0.6745;
-  out.imf_sigma = out.sigma = spread / std::sqrt(1.0 + inverse_valence / interior) / kImf1Share;
+  out.imf_sigma = out.sigma = spread / height_per_sigma / kImf1Share;
   const double second_spread = second.empty() ? 0 : median_absolute_deviation(second) / 0.6745;
   const double detail = kDetailImfRatio * second_spread, noise_left = 1 - std::pow(kDetailImfRatio * kNoiseImf2Share, 2);
   // at most IMF 1's own reading: an IMF 2 quieter than noise alone leaves it (short segments have none)
   out.surely_noise_sigma = std::min(spread, std::sqrt(std::max(0.0, spread * spread - detail * detail) / noise_left)) /
-                           std::sqrt(1.0 + inverse_valence / interior) / kImf1Share;
+                           height_per_sigma / kImf1Share;
 
   std::vector<double> hinges = hinge_heights(positions, faces, adjacency);
   if (static_cast<int>(hinges.size()) < kMinHinges) return true;

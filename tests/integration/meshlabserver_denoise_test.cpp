@@ -7,11 +7,11 @@
 #include <wrap/io_trimesh/import_off.h>
 
 #include <algorithm>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <regex>
-#include <cstring>
 #include <string>
 #include <utility>
 #include <vector>

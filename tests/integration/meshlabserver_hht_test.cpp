@@ -4,12 +4,11 @@
 #include "evaluation/denoise_metrics.h"
 
 #include <gtest/gtest.h>
-
-#include <regex>
 #include <wrap/io_trimesh/import_off.h>
 
 #include <filesystem>
 #include <fstream>
+#include <regex>
 
 namespace hht::test {
 namespace {
@@ -128,12 +127,13 @@ TEST(MeshlabserverHht, CleanIrregularMeshKeepsEveryFaceTheRightWayUp) {
     mesh_to_arrays(in, p, f);
     mesh_to_arrays(out, q, g);
     EXPECT_EQ(flipped_faces(q, p, f), 0) << script;
+    if (std::string(script) == "smooth.mlx") {
+      // the log says the estimate may be bull's own detail, and that its lower bound on the noise reads 0 (item 38)
+      std::smatch surely;
+      ASSERT_TRUE(std::regex_search(run.log, surely, std::regex("the noise is at least ([0-9.]+)%"))) << run.log;
+      EXPECT_LT(std::stod(surely[1]), 1.0) << run.log;
+    }
   }
-  // the log says the estimate may be bull's own detail, and that its lower bound on the noise reads 0 (item 38)
-  const ServerRun run = run_meshlabserver(data_mesh("bull"), resource("smooth.mlx"), "clean_bull_log");
-  std::smatch surely;
-  ASSERT_TRUE(std::regex_search(run.log, surely, std::regex("the noise is at least ([0-9.]+)%"))) << run.log;
-  EXPECT_LT(std::stod(surely[1]), 1.0) << run.log;
 }
 
 TEST(MeshlabserverHht, BadInputLeavesNothingBehind) {
