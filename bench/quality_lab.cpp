@@ -2734,6 +2734,30 @@ int main(int argc, char** argv) {
     show("enhance.mlx", out);
     return 0;
   }
+  if (argc > 3 && std::string(argv[3]) == "spec") {  // the Spectral Filter's smoothing at other settings (item 39)
+    std::string err;
+    std::vector<double> lambdas = list_from_env("LAB_SPEC_LAMBDAS"), cycle_counts = list_from_env("LAB_SPEC_CYCLES");
+    if (lambdas.empty()) lambdas = {0.01};
+    if (cycle_counts.empty()) cycle_counts = {1};
+    for (double lambda : lambdas)
+      for (double cycles : cycle_counts) {
+        SpectralMeshFilterOptions o;  // gain 0 above 0.1: the paper's smoothing
+        o.cycles = int(cycles);
+        o.reconstruction.lambda = lambda;
+        Positions out;
+        SpectralMeshFilterReport r;
+        if (!spectral_mesh_filter(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); continue; }
+        char name[64];
+        std::snprintf(name, sizeof name, "spectral lambda %.3f, %d cycles", lambda, int(cycles));
+        show(name, out);
+        if (std::getenv("LAB_SPEC_GUARD")) {  // every face turned over against the input stood up
+          unturn_few_turned_faces(noisy, f, 1.0, out);
+          std::snprintf(name, sizeof name, "  + turned faces stood up");
+          show(name, out);
+        }
+      }
+    return 0;
+  }
   if (argc > 3 && std::string(argv[3]) == "s") {
     std::string err;
     for (int nt : {3, 10})

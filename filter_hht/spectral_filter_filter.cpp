@@ -31,9 +31,12 @@ void declare(const MeshDocument&, RichParameterList& p) {
                        "(0 to 0.5), where the band starts."));
   p.addParam(RichFloat("lowFrequency", 0.05f, "Band low edge", "For inside / outside: the band's lower frequency."));
   p.addParam(RichFloat("highFrequency", 0.15f, "Band high edge", "For inside / outside: the band's upper frequency."));
-  p.addParam(RichFloat("gain", 0.0f, "Gain",
+  p.addParam(RichFloat("gain", 2.0f, "Gain",
                        QString("Multiplies the selected band (the paper's phi): 0 removes it, 1 leaves the mesh as "
-                               "it is, above 1 enhances it, between 0 and 1 attenuates it (0 to %1).").arg(kMaxGain)));
+                               "it is, above 1 enhances it, between 0 and 1 attenuates it (0 to %1). The default "
+                               "enhances the fine detail; gain 0 with lambda 0.01 is the paper's smoothing, which "
+                               "makes ordinary meshes worse than MeshLab's Taubin Smooth: to remove noise use "
+                               "HHT: Adaptive Smooth.").arg(kMaxGain)));
   p.addParam(RichBool("coarseToFine", false, "Keep only the coarsest IMFs instead",
                       "Ignore the band and gain: keep the residue plus the coarsest IMFs (the paper's Fig. 5 "
                       "series, from smooth to the original)."));
@@ -44,10 +47,11 @@ void declare(const MeshDocument&, RichParameterList& p) {
                              "signals (1 to %1). 1 is the paper's method; more cycles remove the stripes that "
                              "filtering along one cycle leaves (spatial neighbours far apart on the cycle are filtered "
                              "independently), at the cost of one EMD per cycle.").arg(kMaxCycles)));
-  p.addParam(RichFloat("lambda", 0.01f, "Position weight (lambda)",
+  p.addParam(RichFloat("lambda", 0.1f, "Position weight (lambda)",
                        QString("Weight of the original positions in the reconstruction (eq. 9), relative to the mean "
                                "edge length, so a scaled copy of the mesh gives the scaled result. Larger: closer to "
-                               "the input (%1 to %2).").arg(kMinLambda).arg(kMaxLambda)));
+                               "the input; the default anchors the shape while the detail changes, the paper's 0.01 "
+                               "lets it drift (%1 to %2).").arg(kMinLambda).arg(kMaxLambda)));
   p.addParam(RichBool("literalTarget", false, "Paper's literal target (normal only)",
                       expert("Rebuild with the target Laplacian G~ n of eq. 9 as written. It moves vertices "
                              "tangentially even at gain 1; the default keeps the tangential part of L V and changes "
@@ -135,8 +139,9 @@ FilterSpec spectral_filter_filter() {
           "the curvature signal G along a Hamiltonian cycle is decomposed by EMD; each IMF's instantaneous frequency "
           "selects where the gain applies (G~ = sum phi(omega_i) IMF_i + residue, eq. 14); the mesh is rebuilt from "
           "G~ by the Laplacian least-squares solve of eq. 9-11.<br>"
-          "Gain 0 on high frequencies smooths, gain above 1 enhances detail, gain 1 returns the mesh unchanged. The "
-          "connectivity is never changed.",
+          "Gain above 1 enhances detail (the default, as resources/enhance.mlx), gain 1 returns the mesh unchanged, "
+          "gain 0 on high frequencies smooths (the paper's smoothing: to remove noise, HHT: Adaptive Smooth does "
+          "better). The connectivity is never changed.",
           MeshLabFilter::Smoothing,
           MeshLabFilter::SINGLE_MESH,
           MeshModel::MM_VERTCOORD | MeshModel::MM_VERTNORMAL | MeshModel::MM_FACENORMAL,

@@ -113,7 +113,8 @@ def methods():
         ("bilnormal", "Bilateral normal filtering (Zheng et al. 2011; bilateral_normal_denoise.mlx: the guided "
                       "filter's range kernel on each face's own normal, the authors' defaults: 20 passes, sigma_r "
                       "0.35, 10 vertex iterations)", resource_filter("bilateral_normal_denoise")),
-        ("spectral", "HHT spectral (paper, menu defaults)",
+        # The paper's smoothing by HHT: Spectral Filter (its dialog's defaults enhance, as enhance.mlx).
+        ("spectral", "HHT: Spectral Filter, the paper's smoothing (gain 0 above 0.1, lambda 0.01, 1 cycle)",
          resource_filter("enhance", gain=0, **{"lambda": 0.01}, cycles=1)),
         ("bilateral", "Bilateral (bilateral.mlx)", resource_filter("bilateral")),
         ("taubin", "Taubin Smooth (0.5, -0.53, 10 steps)",
@@ -142,7 +143,7 @@ def methods():
 
 SHORT = {"smooth": "smooth", "denoise": "denoise", "guided": "guided", "guided_authors": "guided (authors' scheme)",
          "bilnormal": "bilateral normal",
-         "spectral": "spectral (menu)",
+         "spectral": "spectral (paper)",
          "bilateral": "bilateral", "taubin": "Taubin", "hc": "HC", "laplacian": "Laplacian",
          "twostep": "TwoStep", "nlm": "NLM", "surface_emd": "3D-EMD", "fc_emd": "FC-EMD",
          "paper": "paper's HHT denoise", "denoise_given": "denoise (noise given)",
@@ -718,7 +719,7 @@ def main():
     render(work, "quality_cow_iso20.png",
            [corpus.clean("cow")["path"], "cow_iso20_noisy.ply", "cow_iso20_smooth.ply", "cow_iso20_taubin.ply",
             "cow_iso20_denoise.ply", "cow_iso20_spectral.ply"],
-           ["clean", "noisy (20% iso)", "HHT smooth", "Taubin", "HHT denoise", "spectral (menu)"], 200, 10)
+           ["clean", "noisy (20% iso)", "HHT smooth", "Taubin", "HHT denoise", "spectral (paper)"], 200, 10)
     render(work, "quality_fandisk_nor20.png",
            [corpus.clean("fandisk")["path"], "fandisk_nor20_noisy.ply", "fandisk_nor20_denoise.ply",
             "fandisk_nor20_guided.ply", "fandisk_nor20_bilateral.ply", "fandisk_nor20_twostep.ply"],
