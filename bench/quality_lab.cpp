@@ -2096,9 +2096,12 @@ int main(int argc, char** argv) {
     }
     if (std::getenv("LAB_GUIDED")) {
       Positions g;
-      guided_normal_denoise(noisy, f, GuidedNormalDenoiseOptions{}, g, err);
+      GuidedNormalDenoiseOptions shipped;  // guided_denoise.mlx
+      shipped.stand_up_turned_faces = true;
+      guided_normal_denoise(noisy, f, shipped, g, err);
       show("guided", g);
-      GuidedNormalDenoiseOptions b;
+      GuidedNormalDenoiseOptions b;  // bilateral_normal_denoise.mlx
+      b.stand_up_turned_faces = true;
       b.guidance = NormalGuidance::OwnNormal;
       b.normal_passes = 20;
       b.vertex_iterations = 10;

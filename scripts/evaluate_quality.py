@@ -103,16 +103,18 @@ def methods():
     return [
         ("smooth", "HHT: Adaptive Smooth (smooth.mlx)", resource_filter("smooth")),
         ("denoise", "HHT: Feature-Preserving Denoise (denoise.mlx)", resource_filter("denoise")),
-        ("guided", "Guided Normal Filtering Denoise (guided_denoise.mlx)", resource_filter("guided_denoise")),
+        ("guided", "Guided Normal Filtering Denoise (guided_denoise.mlx; turned faces stood up)",
+         resource_filter("guided_denoise")),
         # The guided filter as its authors' code runs it by default (bldeng/GuidedDenoising: 20
-        # steps of one normal pass and 10 vertex iterations): stronger at heavy noise than the
-        # shipped script's one round of 8 passes, weaker at light noise.
+        # steps of one normal pass and 10 vertex iterations, no faces stood up): stronger at heavy
+        # noise than the shipped script's one round of 8 passes, weaker at light noise.
         ("guided_authors", "Guided normal filtering, its authors' scheme (guided_denoise.mlx: rounds 20, "
-                           "normalPasses 1, vertexIterations 10)",
-         resource_filter("guided_denoise", rounds=20, normalPasses=1, vertexIterations=10)),
+                           "normalPasses 1, vertexIterations 10, standUpTurnedFaces false)",
+         resource_filter("guided_denoise", rounds=20, normalPasses=1, vertexIterations=10,
+                         standUpTurnedFaces="false")),
         ("bilnormal", "Bilateral normal filtering (Zheng et al. 2011; bilateral_normal_denoise.mlx: the guided "
                       "filter's range kernel on each face's own normal, the authors' defaults: 20 passes, sigma_r "
-                      "0.35, 10 vertex iterations)", resource_filter("bilateral_normal_denoise")),
+                      "0.35, 10 vertex iterations; turned faces stood up)", resource_filter("bilateral_normal_denoise")),
         # The paper's smoothing by HHT: Spectral Filter (its dialog's defaults enhance, as enhance.mlx).
         ("spectral", "HHT: Spectral Filter, the paper's smoothing (gain 0 above 0.1, lambda 0.01, 1 cycle)",
          resource_filter("enhance", gain=0, **{"lambda": 0.01}, cycles=1)),

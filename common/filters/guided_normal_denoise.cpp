@@ -1,13 +1,16 @@
 #include "filters/guided_normal_denoise.h"
 
 #include "mesh/mesh_checks.h"
+#include "reconstruction/flip_guard.h"
 #include "reconstruction/normal_vertex_update.h"
 #include "mesh/sharp_features.h"
 
 namespace hht {
 
 bool guided_normal_denoise(const Positions& positions, const Faces& faces, const GuidedNormalDenoiseOptions& options,
-                           Positions& result, std::string& error, const std::function<void(double)>& progress) {
+                           Positions& result, std::string& error, const std::function<void(double)>& progress,
+                           GuidedNormalDenoiseReport* report) {
+  if (report) *report = GuidedNormalDenoiseReport{};
   if (!check_triangle_mesh(positions, faces, error)) return false;
   if (options.rounds < 0 || options.normal_passes < 0 || options.vertex_iterations < 0 || !(options.sigma > 0)) {
     error = "rounds, passes and iterations must be at least 0 and sigma positive";
@@ -44,6 +47,10 @@ bool guided_normal_denoise(const Positions& positions, const Faces& faces, const
   if (!result.allFinite()) {
     error = "the vertex update produced non-finite positions";
     return false;
+  }
+  if (options.stand_up_turned_faces) {
+    const int stood_up = unturn_few_turned_faces(positions, faces, 1.0, result);
+    if (report) report->stood_up_faces = stood_up;
   }
   return true;
 }

@@ -34,11 +34,21 @@ struct GuidedNormalDenoiseOptions {
   bool fit_each_pass = false;  // vertices fitted after every normal pass (see above)
   std::vector<double> face_sigma;  // each face's own range width instead of `sigma` (empty: none)
   NormalGuidance guidance = NormalGuidance::ConsistentPatch;
+  // Ours, not the published methods': the faces the vertex update turned over against the input
+  // (and not folded there) stood back up at the end (flip_guard.h, unturn_few_turned_faces with
+  // every such face taken). On a clean irregular mesh the filter turns its wrinkles and slivers
+  // over (man: 471 faces; docs/quality.md item 40); the filter's dialog has it on.
+  bool stand_up_turned_faces = false;
+};
+
+struct GuidedNormalDenoiseReport {
+  int stood_up_faces = 0;  // with stand_up_turned_faces: the faces stood back up
 };
 
 // Fails like guided_face_normals on broken input (no faces, non-manifold, non-finite).
 // progress(fraction done) after each round's normal filtering and vertex update.
 bool guided_normal_denoise(const Positions& positions, const Faces& faces, const GuidedNormalDenoiseOptions& options,
-                           Positions& result, std::string& error, const std::function<void(double)>& progress = {});
+                           Positions& result, std::string& error, const std::function<void(double)>& progress = {},
+                           GuidedNormalDenoiseReport* report = nullptr);
 
 }  // namespace hht

@@ -817,6 +817,7 @@ TEST(MeshlabserverParameters, AdaptiveSmoothLogsTheTangentialCap) {
 TEST(MeshlabserverParameters, GuidedDenoiseRoundsPassesSigmaIterations) {
   const NoisyInput n = noisy_fandisk("guided_input");
   GuidedNormalDenoiseOptions o;
+  o.stand_up_turned_faces = true;  // the script's
   o.rounds = 2;
   o.normal_passes = 3;
   o.sigma = f(0.5);
@@ -837,6 +838,7 @@ TEST(MeshlabserverParameters, GuidedDenoiseRoundsPassesSigmaIterations) {
 TEST(MeshlabserverParameters, BilateralNormalDenoiseScript) {
   const NoisyInput n = noisy_fandisk("bilateral_normal_input");
   GuidedNormalDenoiseOptions o;
+  o.stand_up_turned_faces = true;  // the script's
   o.guidance = NormalGuidance::OwnNormal;
   o.normal_passes = 20;
   o.vertex_iterations = 10;
@@ -849,6 +851,31 @@ TEST(MeshlabserverParameters, BilateralNormalDenoiseScript) {
   const ServerRun run = run_resource(n.path, "bilateral_normal_denoise.mlx", {}, "bilateral_normal");
   EXPECT_NE(run.log.find("Bilateral normal filtering denoise: 1 round(s) of 20 passes"), std::string::npos) << run.log;
   expect_positions(saved_positions(run), expected, n.in.diagonal, "bilateral_normal");
+}
+
+// On a clean irregular mesh (femur) guided_denoise.mlx stands up the faces the filter turned over,
+// as the library does and its log says; standUpTurnedFaces false gives the published method.
+TEST(MeshlabserverParameters, GuidedDenoiseStandsUpTurnedFaces) {
+  const Input in = read_input("femur");
+  const Positions& clean = in.positions;
+  const std::string input = data_mesh("femur");
+  GuidedNormalDenoiseOptions published, guarded;
+  guarded.stand_up_turned_faces = true;
+  Positions plain, stood;
+  GuidedNormalDenoiseReport report;
+  std::string error;
+  ASSERT_TRUE(guided_normal_denoise(clean, in.faces, published, plain, error)) << error;
+  ASSERT_TRUE(guided_normal_denoise(clean, in.faces, guarded, stood, error, {}, &report)) << error;
+  ASSERT_GT(report.stood_up_faces, 0);
+  EXPECT_GT((plain - stood).rowwise().norm().maxCoeff(), 1e-4 * in.diagonal);
+  const ServerRun on = run_resource(input, "guided_denoise.mlx", {}, "guided_stand_up");
+  expect_positions(saved_positions(on), stood, in.diagonal, "guided, faces stood up");
+  EXPECT_NE(on.log.find("  " + std::to_string(report.stood_up_faces) + " faces the vertex update turned over stood back up"),
+            std::string::npos)
+      << on.log;
+  const ServerRun off = run_resource(input, "guided_denoise.mlx", {{"standUpTurnedFaces", "false"}}, "guided_published");
+  expect_positions(saved_positions(off), plain, in.diagonal, "guided, published");
+  EXPECT_EQ(off.log.find("stood back up"), std::string::npos) << off.log;
 }
 
 TEST(MeshlabserverParameters, NonLocalMeansEtasAndIterations) {
