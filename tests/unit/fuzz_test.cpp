@@ -262,14 +262,17 @@ std::vector<Case> entry_points() {
        }},
       {"GuidedNormalDenoise", false,
        [](const Positions& p, const Faces& f) {
+         GuidedNormalDenoiseOptions o;
+         o.stand_up_turned_faces = true;  // as guided_denoise.mlx
          Positions out;
          std::string e;
-         const bool ok = guided_normal_denoise(p, f, {}, out, e);
+         const bool ok = guided_normal_denoise(p, f, o, out, e);
          return refused_or(ok, e, {out});
        }},
       {"BilateralNormalDenoise", false,
        [](const Positions& p, const Faces& f) {
          GuidedNormalDenoiseOptions o;
+         o.stand_up_turned_faces = true;  // as bilateral_normal_denoise.mlx
          o.guidance = NormalGuidance::OwnNormal;
          Positions out;
          std::string e;
