@@ -1863,6 +1863,7 @@ int main(int argc, char** argv) {
     if (std::getenv("LAB_NOBORDERS")) o.hold_borders = false;
     if (const char* x = std::getenv("LAB_DRIFTSTEP")) o.refine_drift_step = std::atof(x);
     if (const char* x = std::getenv("LAB_EXTRAFACTOR")) o.refine_extra_rounds_factor = std::atof(x);
+    if (const char* x = std::getenv("LAB_SLIVERALT")) o.refine_sliver_altitude = std::atof(x);  // 0: as before item 41
     if (const char* x = std::getenv("LAB_CONVERGEDSTEP")) o.refine_converged_step = std::atof(x);
     if (std::getenv("LAB_NOROUTE")) o.smooth_surfaces_by_smoothing = false;
     if (const char* band = std::getenv("LAB_BAND")) std::sscanf(band, "%lf,%lf", &o.no_crease_contrast, &o.crease_contrast);

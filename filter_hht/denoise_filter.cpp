@@ -285,12 +285,18 @@ bool apply(FilterRun& run) {
     if (!report.refine_steps.empty()) {
       QStringList moves;
       for (double m : report.refine_steps) moves << QString::number(m, 'f', 3);
-      run.log(QString("  rounds: %1 set by the noise; moves of rounds 2 on (noise sigmas): %2%3")
+      const QString thin = report.refine_rounds_allowed > std::max(report.refine_rounds_asked,
+                                                                     static_cast<int>(std::lround(o.refine_extra_rounds_factor * report.refine_rounds_asked)))
+                               ? QString(" (up to %1 while they converge: the faces' median altitude is %2 mean edges)")
+                                     .arg(report.refine_rounds_allowed).arg(report.refine_median_altitude, 0, 'f', 2)
+                               : QString();
+      run.log(QString("  rounds: %1 set by the noise%4; moves of rounds 2 on (noise sigmas): %2%3")
                   .arg(report.refine_rounds_asked).arg(moves.join(", "))
                   .arg(!report.refine_round_undone ? QString()
                        : report.refine_rounds < report.refine_rounds_asked
                            ? QString("; the last drifted (above %1) and was undone").arg(o.refine_drift_step)
-                           : QString("; the last did not converge (above %1) and was undone").arg(o.refine_converged_step)));
+                           : QString("; the last did not converge (above %1) and was undone").arg(o.refine_converged_step))
+                  .arg(thin));
     }
     if (report.refine_unturned_faces > 0)
       run.log(QString("  %1 faces the refinement turned over against its start stood back up").arg(report.refine_unturned_faces));

@@ -1,6 +1,7 @@
 #include "filters/feature_preserving_denoise.h"
 
 #include "mesh/crease_contrast.h"
+#include "mesh/face_geometry.h"
 #include "mesh/faces_near_creases.h"
 #include "mesh/vertex_normals.h"
 #include "reconstruction/flip_guard.h"
@@ -184,9 +185,18 @@ bool refine(const Faces& faces, const DenoiseOptions& options, double sigma, dou
     const Positions rebuilt = result;
     // Rounds set by the noise end early at one that drifts, and go on (up to kExtraRoundsFactor times
     // as many) while each converges (kRoundDriftStep, kRoundConvergedStep); a given count is done as is.
+    // On thin faces (kSliverAltitude) the extra rounds follow the count against their altitude.
     const int asked = report.refine_rounds_asked;
+    int converging = asked;
+    if (rounds_by_noise && options.refine_sliver_altitude > 0) {
+      report.refine_median_altitude = median_face_altitude(result, faces) / edge;
+      const double thin = std::clamp(options.refine_sliver_altitude / report.refine_median_altitude, 1.0, kMaxSliverFactor);
+      converging = std::max(asked, static_cast<int>(std::lround(sigma * thin / kNoisePerRound)));
+    }
     const int max_rounds =
-        rounds_by_noise ? std::max(asked, static_cast<int>(std::lround(options.refine_extra_rounds_factor * asked))) : asked;
+        rounds_by_noise ? std::max(converging, static_cast<int>(std::lround(options.refine_extra_rounds_factor * converging)))
+                        : asked;
+    report.refine_rounds_allowed = max_rounds;
     GuidedNormalDenoiseOptions own;  // the last rounds: bilateral normal filtering, one width
     own.normal_passes = refine.normal_passes;
     own.vertex_iterations = refine.vertex_iterations;
@@ -373,8 +383,9 @@ bool denoise_every_vertex(const Positions& positions, const Faces& faces, const 
     if (progress) progress(percent, what);
   };
   if (!(options.refine_drift_step > 0) || !(options.refine_converged_step >= 0) ||
-      !(options.refine_extra_rounds_factor >= 1 && options.refine_extra_rounds_factor <= 10)) {
-    error = "refinement round rule out of range: drift step above 0, converged step at least 0, extra rounds factor 1 to 10";
+      !(options.refine_extra_rounds_factor >= 1 && options.refine_extra_rounds_factor <= 10) ||
+      !(options.refine_sliver_altitude >= 0 && options.refine_sliver_altitude <= 10)) {
+    error = "refinement round rule out of range: drift step above 0, converged step at least 0, extra rounds factor 1 to 10, sliver altitude 0 to 10";
     return false;
   }
   if (!(options.distorting_move_low >= 0 && options.distorting_move_low <= options.distorting_move_high)) {

@@ -79,6 +79,16 @@ constexpr double kRoundDriftStep = 0.18;
 constexpr double kRoundConvergedStep = 0.10;
 constexpr double kExtraRoundsFactor = 1.5;
 
+// Thin faces: the noise tilts a face by about sigma over its altitude, not over the mean edge. On
+// a mesh whose faces' median altitude (median_face_altitude) is under kSliverAltitude mean edges,
+// the rounds after the noise's count may go on, while each converges, up to kExtraRoundsFactor
+// times the count taken against that altitude (sigma * kSliverAltitude / altitude) instead of
+// the mean edge. Blade, long slivers of median altitude 0.14: three to five rounds instead of one
+// or two, 1.2-5 degrees lower at 10-30% (docs/quality.md item 41). The factor is at most
+// kMaxSliverFactor: on a soup of needles the rounds stay bounded.
+constexpr double kSliverAltitude = 0.55;
+constexpr double kMaxSliverFactor = 4.0;
+
 // From one round's noise on (sigma >= kNoisePerRound), or from the untangled start, the refinement
 // fits the vertices after every normal pass, kFitEachPassIterations vertex update iterations each,
 // as the guided filter's authors do, instead of once after all passes: heavy noise, or noise that
@@ -193,6 +203,7 @@ struct DenoiseOptions {
   double refine_drift_step = kRoundDriftStep;        // with rounds set by the noise (experiments)
   double refine_converged_step = kRoundConvergedStep;
   double refine_extra_rounds_factor = kExtraRoundsFactor;
+  double refine_sliver_altitude = kSliverAltitude;  // 0: the count against the mean edge alone (experiments)
   double distorting_move_low = kDistortingMoveLow;  // the uncertain band of item 17's rule (experiments)
   double distorting_move_high = kDistortingMoveHigh;
   double folded_low = kHeavilyFoldedLow;  // the folded share's band of item 17's rule (experiments)
@@ -226,6 +237,8 @@ struct DenoiseReport {
   // The noise-level smoothing moved the mesh beyond the noise: refined from the input.
   bool smoothing_distorts() const { return distort_weight == 1; }
   int refine_rounds_asked = 0;   // given, or set by the noise
+  int refine_rounds_allowed = 0;  // the most that were allowed while converging (with thin faces more)
+  double refine_median_altitude = 0;  // of the refinement's start, in mean edges (with rounds set by the noise)
   int refine_rounds = 0;         // done
   std::vector<double> refine_steps;  // with rounds set by the noise: the move of each round after the
                                      // first (RMS, in sigma * mean edge)

@@ -1,5 +1,8 @@
 #include "mesh/face_geometry.h"
 
+#include <algorithm>
+#include <vector>
+
 namespace hht {
 
 FaceGeometry face_geometry(const Positions& positions, const Faces& faces) {
@@ -17,6 +20,19 @@ FaceGeometry face_geometry(const Positions& positions, const Faces& faces) {
     g.centroids.row(f) = (a + b + c) / 3.0;
   }
   return g;
+}
+
+double median_face_altitude(const Positions& positions, const Faces& faces) {
+  if (faces.rows() == 0) return 0;
+  std::vector<double> altitudes(faces.rows());
+  for (Eigen::Index f = 0; f < faces.rows(); ++f) {
+    const Eigen::RowVector3d a = positions.row(faces(f, 0)), b = positions.row(faces(f, 1)), c = positions.row(faces(f, 2));
+    const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
+    altitudes[f] = longest > 0 ? (b - a).cross(c - a).norm() / longest : 0;
+  }
+  const auto middle = altitudes.begin() + altitudes.size() / 2;
+  std::nth_element(altitudes.begin(), middle, altitudes.end());
+  return *middle;
 }
 
 }  // namespace hht

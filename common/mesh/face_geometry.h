@@ -13,4 +13,8 @@ struct FaceGeometry {
 
 FaceGeometry face_geometry(const Positions& positions, const Faces& faces);
 
+// The median over the faces of each one's altitude onto its longest side (twice its area over
+// that side; 0 for a degenerate face): how thin the triangles are, slivers small. 0 without faces.
+double median_face_altitude(const Positions& positions, const Faces& faces);
+
 }  // namespace hht

@@ -22,6 +22,7 @@
 #include <wrap/io_trimesh/export_ply.h>
 #include <wrap/io_trimesh/import_off.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -575,6 +576,21 @@ TEST(MeshlabserverParameters, DenoiseRefinesADistortedCoarseExportFromItsInput) 
   EXPECT_NE(run.log.find("distorts features a few edges wide (a coarse CAD export); refined from the input"), std::string::npos)
       << run.log;
   EXPECT_NE(run.log.find("started from the input"), std::string::npos) << run.log;
+}
+
+// Blade at 10% along the normals: its slivers get converging rounds up to the count against their
+// median altitude (item 41), as in the library; the log gives the altitude and the rounds allowed.
+TEST(MeshlabserverParameters, DenoiseGivesThinFacesMoreConvergingRounds) {
+  DenoisedInput d;
+  ASSERT_NO_FATAL_FAILURE(denoise_noisy("blade", 10.0, NoiseDirection::Normal, {}, d));
+  ASSERT_GT(d.report.refine_rounds, d.report.refine_rounds_asked);
+  const ServerRun run = run_resource(d.path, "denoise.mlx", {}, "denoise_thin_faces");
+  expect_positions(saved_positions(run), d.expected, d.in.diagonal, "thin faces");
+  char altitude[32];
+  std::snprintf(altitude, sizeof altitude, "%.2f", d.report.refine_median_altitude);
+  const std::string line = "(up to " + std::to_string(d.report.refine_rounds_allowed) +
+                           " while they converge: the faces' median altitude is " + altitude + " mean edges)";
+  EXPECT_NE(run.log.find(line), std::string::npos) << line << "\n" << run.log;
 }
 
 // Fandisk at 70% isotropic noise: the smoothed mesh reads no sharp creases, a trial refinement
