@@ -285,8 +285,7 @@ bool apply(FilterRun& run) {
     if (!report.refine_steps.empty()) {
       QStringList moves;
       for (double m : report.refine_steps) moves << QString::number(m, 'f', 3);
-      const QString thin = report.refine_rounds_allowed > std::max(report.refine_rounds_asked,
-                                                                     static_cast<int>(std::lround(o.refine_extra_rounds_factor * report.refine_rounds_asked)))
+      const QString thin = report.refine_median_altitude > 0 && report.refine_median_altitude < o.refine_sliver_altitude
                                ? QString(" (up to %1 while they converge: the faces' median altitude is %2 mean edges)")
                                      .arg(report.refine_rounds_allowed).arg(report.refine_median_altitude, 0, 'f', 2)
                                : QString();
