@@ -1,6 +1,8 @@
-// Small helpers for the benchmarks: loading a mesh file and reading the process's memory.
+// Small helpers for the benchmarks: loading a mesh file (its faces oriented as the plugin orients
+// them) and reading the process's memory.
 #pragma once
 
+#include "mesh/coherent_orientation.h"
 #include "mesh/mesh_arrays.h"
 #include "mesh/tri_mesh.h"
 
@@ -17,6 +19,7 @@ inline bool load_mesh(const std::string& path, Positions& positions, Faces& face
   int mask = 0;
   if (vcg::tri::io::Importer<TriMesh>::Open(m, path.c_str(), mask) != 0) return false;
   mesh_to_arrays(m, positions, faces);
+  orient_as_most_faces(faces, static_cast<int>(positions.rows()));  // as the plugin reads a mesh (mesh_adapter.h)
   return true;
 }
 

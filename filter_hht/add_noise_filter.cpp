@@ -32,7 +32,7 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions;
   hht::Faces faces;
-  if (!read_triangle_mesh(model.cm, positions, faces, run.error)) return false;
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log)) return false;
   const double percent = run.parameters.getFloat("sigmaPercent");
   if (!check_range("sigma", percent, 0, 1000, run.error, " percent of the mean edge length")) return false;
   const double share = run.parameters.getFloat("sharePercent");

@@ -23,7 +23,7 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions, result;
   hht::Faces faces;
-  if (!read_triangle_mesh(model.cm, positions, faces, run.error)) return false;
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log)) return false;
   hht::BilateralOptions o;
   o.sigma_c = run.parameters.getFloat("sigmaC");
   o.sigma_s = run.parameters.getFloat("sigmaS");

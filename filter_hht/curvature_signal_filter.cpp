@@ -19,7 +19,7 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions;
   hht::Faces faces;
-  if (!read_triangle_mesh(model.cm, positions, faces, run.error) ||
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log) ||
       !check_range("the colour ramp clipping", run.parameters.getFloat("rampPercentile"), 0, 50, run.error, " percent"))
     return false;
 

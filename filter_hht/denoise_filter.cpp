@@ -141,7 +141,7 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions, result;
   hht::Faces faces;
-  if (!read_triangle_mesh(model.cm, positions, faces, run.error)) return false;
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log)) return false;
   const RichParameterList& par = run.parameters;
   hht::DenoiseOptions o;
   o.noise = par.getFloat("noisePercent") / 100.0;

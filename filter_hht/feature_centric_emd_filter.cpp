@@ -23,7 +23,7 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions;
   hht::Faces faces;
-  if (!read_triangle_mesh(model.cm, positions, faces, run.error)) return false;
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log)) return false;
   hht::SurfaceEmdSmoothingOptions options;
   if (!surface_emd_smoothing_options(run.parameters, options, run.error)) return false;
   options.feature_centric = true;

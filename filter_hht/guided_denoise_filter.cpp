@@ -38,7 +38,7 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions, result;
   hht::Faces faces;
-  if (!read_triangle_mesh(model.cm, positions, faces, run.error)) return false;
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log)) return false;
   hht::GuidedNormalDenoiseOptions o;
   o.rounds = run.parameters.getInt("rounds");
   o.normal_passes = run.parameters.getInt("normalPasses");

@@ -54,7 +54,7 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions;
   hht::Faces faces;
-  if (!read_triangle_mesh(model.cm, positions, faces, run.error)) return false;
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log)) return false;
 
   run.report(10, "Growing the ring");
   hht::CycleOptions options;

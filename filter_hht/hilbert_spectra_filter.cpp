@@ -46,7 +46,7 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions;
   hht::Faces faces;
-  if (!read_triangle_mesh(model.cm, positions, faces, run.error)) return false;
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log)) return false;
   const RichParameterList& par = run.parameters;
   const int imf = par.getInt("imf") - 1;
   const int output = std::clamp(par.getEnum("output"), 0, 4);

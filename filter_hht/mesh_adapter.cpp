@@ -1,5 +1,6 @@
 #include "mesh_adapter.h"
 
+#include "mesh/coherent_orientation.h"
 #include "mesh/mesh_checks.h"
 #include "mesh/value_range.h"
 #include "reconstruction/keep_untouched_vertices.h"
@@ -18,6 +19,20 @@ bool read_triangle_mesh(const CMeshO& m, hht::Positions& positions, hht::Faces& 
     error = nothing_changed(message);
     return false;
   }
+  return true;
+}
+
+bool read_mesh_to_filter(const CMeshO& m, hht::Positions& positions, hht::Faces& faces, QString& error,
+                         const std::function<void(const QString&)>& log) {
+  if (!read_triangle_mesh(m, positions, faces, error)) return false;
+  const hht::OrientationRepair repair = hht::orient_as_most_faces(faces, static_cast<int>(positions.rows()));
+  if (repair.flipped > 0)
+    log(QString("Orientation: %1 of %2 faces (in %3 connected parts) ran against their neighbours' orientation: the filter worked "
+                "on them turned to agree, the mesh's own faces are left as they were (Normals, Curvatures and "
+                "Orientation > Re-Orient all faces coherentely turns them for good)")
+            .arg(repair.flipped).arg(faces.rows()).arg(repair.components));
+  else if (!repair.done && repair.why_not.find("orientable") != std::string::npos)
+    log(QString("Orientation: the faces could not be checked: %1").arg(QString::fromStdString(repair.why_not)));
   return true;
 }
 

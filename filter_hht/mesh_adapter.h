@@ -21,6 +21,13 @@ namespace hht_plugin {
 // Arrays of `m`'s live vertices and faces; fails with a message on an empty or broken mesh.
 bool read_triangle_mesh(const CMeshO& m, hht::Positions& positions, hht::Faces& faces, QString& error);
 
+// read_triangle_mesh for a filter that works on the mesh: faces oriented against their neighbours
+// are turned in `faces` (hht::orient_as_most_faces), so that the normals the filter computes
+// agree; the mesh's own faces are left as they are. Says in `log` how many were turned, or why
+// none could be.
+bool read_mesh_to_filter(const CMeshO& m, hht::Positions& positions, hht::Faces& faces, QString& error,
+                         const std::function<void(const QString&)>& log);
+
 // The error of a filter that stopped before touching the mesh: "Nothing was changed: <why>.".
 QString nothing_changed(const std::string& why);
 

@@ -25,7 +25,7 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions, result;
   hht::Faces faces;
-  if (!read_triangle_mesh(model.cm, positions, faces, run.error)) return false;
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log)) return false;
   hht::NonLocalMeansOptions o;
   o.eta1 = run.parameters.getFloat("eta1");
   o.eta2 = run.parameters.getFloat("eta2");

@@ -37,7 +37,7 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions;
   hht::Faces faces;
-  if (!read_triangle_mesh(model.cm, positions, faces, run.error)) return false;
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log)) return false;
   const RichParameterList& par = run.parameters;
   hht::SurfaceEmdSmoothingOptions options;
   if (!surface_emd_smoothing_options(par, options, run.error) ||
