@@ -141,7 +141,8 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions, result;
   hht::Faces faces;
-  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log)) return false;
+  std::vector<int> welded_of;  // merged seams: each mesh vertex's row
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, &welded_of)) return false;
   const RichParameterList& par = run.parameters;
   hht::DenoiseOptions o;
   o.noise = par.getFloat("noisePercent") / 100.0;
@@ -180,13 +181,15 @@ bool apply(FilterRun& run) {
   auto progress = [&](int percent, const char* stage) { run.report(percent, stage); };
   if (!move_vertices_checked(model, positions, result, [&](hht::Positions& out, std::string& message) {
         return hht::feature_preserving_denoise(positions, faces, o, out, report, message, progress);
-      }, run.error))
+      }, run.error, welded_of))
     return false;
   if (show == SelectFeatureVertices) {
     size_t i = 0;
     for (auto& v : model.cm.vert) {
       if (v.IsD()) continue;
-      if (report.type[i++] != hht::FeatureType::None) v.SetS(); else v.ClearS();
+      const size_t row = welded_of.empty() ? i : static_cast<size_t>(welded_of[i]);
+      ++i;
+      if (report.type[row] != hht::FeatureType::None) v.SetS(); else v.ClearS();
     }
   } else if (show == FeatureLineLayer) {
     add_feature_layer(run.document, result, report.feature_lines, "Feature lines of " + model.label());

@@ -38,7 +38,8 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions, result;
   hht::Faces faces;
-  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log)) return false;
+  std::vector<int> welded_of;  // merged seams: each mesh vertex's row
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, &welded_of)) return false;
   hht::GuidedNormalDenoiseOptions o;
   o.rounds = run.parameters.getInt("rounds");
   o.normal_passes = run.parameters.getInt("normalPasses");
@@ -57,7 +58,7 @@ bool apply(FilterRun& run) {
   hht::GuidedNormalDenoiseReport report;
   if (!move_vertices_checked(model, positions, result, [&](hht::Positions& out, std::string& message) {
         return hht::guided_normal_denoise(positions, faces, o, out, message, {}, &report);
-      }, run.error))
+      }, run.error, welded_of))
     return false;
   run.log(QString("%1 normal filtering denoise: %2 round(s) of %3 passes (sigma_r %4) and %5 vertex iterations; "
                   "%6 s")

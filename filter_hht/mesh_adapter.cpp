@@ -1,5 +1,6 @@
 #include "mesh_adapter.h"
 
+#include "mesh/border_weld.h"
 #include "mesh/coherent_orientation.h"
 #include "mesh/mesh_checks.h"
 #include "mesh/value_range.h"
@@ -23,8 +24,27 @@ bool read_triangle_mesh(const CMeshO& m, hht::Positions& positions, hht::Faces& 
 }
 
 bool read_mesh_to_filter(const CMeshO& m, hht::Positions& positions, hht::Faces& faces, QString& error,
-                         const std::function<void(const QString&)>& log) {
+                         const std::function<void(const QString&)>& log, std::vector<int>* welded_of) {
   if (!read_triangle_mesh(m, positions, faces, error)) return false;
+  if (welded_of) {
+    welded_of->clear();
+    hht::BorderWeld weld;
+    std::string why_not;
+    if (hht::weld_coincident_border_vertices(positions, faces, weld, why_not)) {
+      log(QString("Seams: %1 of %2 vertices sat exactly on another at a border (faces not joined there, as in a "
+                  "triangle soup or a mesh cut at texture seams): the filter worked on them merged%3 and gives each "
+                  "copy the same result, so the seams stay closed (Cleaning and Repairing > Merge Close Vertices joins "
+                  "them for good)")
+              .arg(weld.merged).arg(positions.rows())
+              .arg(weld.dropped_faces > 0 ? QString(", without the %1 faces that merging left with no area").arg(weld.dropped_faces)
+                                          : QString()));
+      positions = std::move(weld.positions);
+      faces = std::move(weld.faces);
+      *welded_of = std::move(weld.welded_of);
+    } else if (!why_not.empty()) {
+      log(QString("Seams: border vertices sit on each other but were left apart: %1").arg(QString::fromStdString(why_not)));
+    }
+  }
   const hht::OrientationRepair repair = hht::orient_as_most_faces(faces, static_cast<int>(positions.rows()));
   if (repair.flipped > 0)
     log(QString("Orientation: %1 of %2 faces (in %3 connected parts) ran against their neighbours' orientation: the filter worked "
@@ -41,13 +61,13 @@ QString nothing_changed(const std::string& why) {
 }
 
 bool move_vertices_checked(MeshModel& model, const hht::Positions& positions, hht::Positions& result,
-                           const PositionsWork& work, QString& error) {
+                           const PositionsWork& work, QString& error, const std::vector<int>& welded_of) {
   std::string message;
   if (!work(result, message) || !hht::check_result_positions(positions, result, message)) {
     error = nothing_changed(message);
     return false;
   }
-  hht::set_vertex_positions(model.cm, result);
+  hht::set_vertex_positions(model.cm, welded_of.empty() ? result : hht::unwelded(result, welded_of));
   update_box_and_normals(model);
   return true;
 }

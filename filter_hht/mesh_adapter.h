@@ -21,12 +21,14 @@ namespace hht_plugin {
 // Arrays of `m`'s live vertices and faces; fails with a message on an empty or broken mesh.
 bool read_triangle_mesh(const CMeshO& m, hht::Positions& positions, hht::Faces& faces, QString& error);
 
-// read_triangle_mesh for a filter that works on the mesh: faces oriented against their neighbours
-// are turned in `faces` (hht::orient_as_most_faces), so that the normals the filter computes
-// agree; the mesh's own faces are left as they are. Says in `log` how many were turned, or why
-// none could be.
+// read_triangle_mesh for a filter that works on the mesh. With `welded_of`, border vertices at the
+// same position are merged in the arrays (hht::weld_coincident_border_vertices: a triangle soup or
+// a surface cut at seams made whole) and `welded_of` gets each mesh vertex's row (left empty when
+// nothing was merged); then faces oriented against their neighbours are turned in `faces`
+// (hht::orient_as_most_faces), so that the normals the filter computes agree. The mesh itself is
+// left as it is. Says in `log` what was merged and turned.
 bool read_mesh_to_filter(const CMeshO& m, hht::Positions& positions, hht::Faces& faces, QString& error,
-                         const std::function<void(const QString&)>& log);
+                         const std::function<void(const QString&)>& log, std::vector<int>* welded_of = nullptr);
 
 // The error of a filter that stopped before touching the mesh: "Nothing was changed: <why>.".
 QString nothing_changed(const std::string& why);
@@ -39,8 +41,9 @@ using PositionsWork = std::function<bool(hht::Positions& result, std::string& er
 // finite or moved a vertex farther than hht::kMaxMoveDiagonals bounding-box diagonals
 // (hht::check_result_positions), and only then writes it into the mesh, box and normals
 // updated. On false the mesh is exactly as it was and `error` is "Nothing was changed: ...".
+// With `welded_of` (read_mesh_to_filter's) the result is spread to the merged vertices.
 bool move_vertices_checked(MeshModel& model, const hht::Positions& positions, hht::Positions& result,
-                           const PositionsWork& work, QString& error);
+                           const PositionsWork& work, QString& error, const std::vector<int>& welded_of = {});
 
 // Refuses a parameter outside [low, high] (NaN included) with a message naming it and the range
 // ("Nothing was changed: <what> must lie in [low, high]<why>, not <value>.").
