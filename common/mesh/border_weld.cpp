@@ -26,11 +26,20 @@ bool weld_coincident_border_vertices(const Positions& positions, const Faces& fa
                                      std::string& why_not) {
   weld = BorderWeld{};
   why_not.clear();
-  const int n = static_cast<int>(positions.rows());
   CornerTable table;
   int inconsistent = 0;
   std::string error;
-  if (!build_corner_table(faces, n, table, inconsistent, error)) return false;  // the filter says what is wrong
+  if (!build_corner_table(faces, static_cast<int>(positions.rows()), table, inconsistent, error))
+    return false;  // the filter says what is wrong
+  return weld_coincident_border_vertices(positions, faces, table, weld, why_not);
+}
+
+bool weld_coincident_border_vertices(const Positions& positions, const Faces& faces, const CornerTable& table,
+                                     BorderWeld& weld, std::string& why_not) {
+  weld = BorderWeld{};
+  why_not.clear();
+  const int n = static_cast<int>(positions.rows());
+  std::string error;
   std::vector<int> border;
   {
     std::vector<unsigned char> on_border(n, 0);

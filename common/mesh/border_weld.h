@@ -30,6 +30,9 @@ struct BorderWeld {
 // only (more non-manifold vertices than the input has; `why_not` says which).
 bool weld_coincident_border_vertices(const Positions& positions, const Faces& faces, BorderWeld& weld,
                                      std::string& why_not);
+// The same with `faces`' corner table already built (build_corner_table).
+bool weld_coincident_border_vertices(const Positions& positions, const Faces& faces, const CornerTable& table,
+                                     BorderWeld& weld, std::string& why_not);
 
 // `welded` (one row per merged vertex) spread back to the input's vertices.
 Positions unwelded(const Positions& welded, const std::vector<int>& welded_of);

@@ -5,10 +5,15 @@
 namespace hht {
 
 OrientationRepair orient_as_most_faces(Faces& faces, int vertex_count) {
-  OrientationRepair repair;
   CornerTable table;
   int inconsistent_edges = 0;
+  OrientationRepair repair;
   if (!build_corner_table(faces, vertex_count, table, inconsistent_edges, repair.why_not)) return repair;
+  return orient_as_most_faces(faces, table, inconsistent_edges);
+}
+
+OrientationRepair orient_as_most_faces(Faces& faces, const CornerTable& table, int inconsistent_edges) {
+  OrientationRepair repair;
   repair.done = true;
   if (inconsistent_edges == 0) return repair;
   // One coherent orientation per component (its first face's), then per component the one of the

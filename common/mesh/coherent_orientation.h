@@ -24,5 +24,8 @@ struct OrientationRepair {
 // connected component have. Leaves `faces` as they were when no coherent orientation exists or
 // the mesh has edges shared by more than two faces.
 OrientationRepair orient_as_most_faces(Faces& faces, int vertex_count);
+// The same with `faces`' corner table and its count of inconsistent edges already built
+// (build_corner_table), which costs as much as the rest (0.27 s at 3.3M faces).
+OrientationRepair orient_as_most_faces(Faces& faces, const CornerTable& table, int inconsistent_edges);
 
 }  // namespace hht
