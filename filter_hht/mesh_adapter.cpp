@@ -52,10 +52,10 @@ bool read_mesh_to_filter(const CMeshO& m, hht::Positions& positions, hht::Faces&
   }
   const hht::OrientationRepair repair = hht::orient_as_most_faces(faces, table, inconsistent);
   if (repair.flipped > 0)
-    log(QString("Orientation: %1 of %2 faces (in %3 connected parts) ran against their neighbours' orientation: the "
+    log(QString("Orientation: %1 of %2 faces (in %3 connected part%4) ran against their neighbours' orientation: the "
                 "filter worked on them turned to agree, the mesh's own faces are left as they were (Normals, Curvatures "
                 "and Orientation > Re-Orient all faces coherentely turns them for good)")
-            .arg(repair.flipped).arg(faces.rows()).arg(repair.components));
+            .arg(repair.flipped).arg(faces.rows()).arg(repair.components).arg(repair.components == 1 ? "" : "s"));
   else if (!repair.done)
     log(QString("Orientation: the faces could not be checked: %1").arg(QString::fromStdString(repair.why_not)));
   return true;

@@ -20,6 +20,8 @@
 #include "filters/spectral_mesh_filter.h"
 #include "filters/surface_emd.h"
 #include "filters/surface_emd_smoothing.h"
+#include "mesh/border_weld.h"
+#include "mesh/coherent_orientation.h"
 #include "mesh/mean_curvature.h"
 #include "mesh/mesh_checks.h"
 #include "mesh/sharp_features.h"
@@ -329,6 +331,28 @@ std::vector<Case> entry_points() {
          std::string e;
          const bool ok = surface_emd_smoothing(p, f, o, out, r, e);
          return refused_or(ok, e, {out});
+       }},
+      // The plugin's path (filter_hht/mesh_adapter.h): border vertices on each other merged, faces
+      // against their neighbours turned, the smoothing, its result spread back to every copy.
+      {"MergedOrientedThenAdaptiveSmooth", true,
+       [](const Positions& p, const Faces& f) {
+         Positions v = p;
+         Faces faces = f;
+         BorderWeld weld;
+         std::string e;
+         std::vector<int> welded_of;
+         if (weld_coincident_border_vertices(v, faces, weld, e)) {
+           v = weld.positions;
+           faces = weld.faces;
+           welded_of = weld.welded_of;
+         }
+         orient_as_most_faces(faces, static_cast<int>(v.rows()));
+         NoiseAdaptiveSmoothingReport r;
+         Positions out;
+         if (!noise_adaptive_smooth(v, faces, {}, out, r, e)) return Outcome{false, e, {}};
+         if (!welded_of.empty()) out = unwelded(out, welded_of);
+         EXPECT_EQ(out.rows(), p.rows()) << "the result spread back has a row per input vertex";
+         return Outcome{true, "", {out}};
        }},
       {"Bilateral", true,
        [](const Positions& p, const Faces& f) { return Outcome{true, "", {bilateral_denoise(p, f, {})}}; }},
