@@ -28,15 +28,15 @@ void declare(const MeshDocument&, RichParameterList& p) {
                       "component), to look at over the mesh."));
 }
 
-void add_cycle_layer(MeshDocument& document, const CMeshO& source, const hht::HamiltonianCycle& cycle,
+void add_cycle_layer(MeshDocument& document, const hht::Positions& positions, const hht::HamiltonianCycle& cycle,
                      const QString& label) {
-  std::vector<const CVertexO*> live;
-  for (const auto& v : source.vert)
-    if (!v.IsD()) live.push_back(&v);
   MeshModel* layer = document.addNewMesh("", label, false);
   CMeshO& m = layer->cm;
   auto vi = vcg::tri::Allocator<CMeshO>::AddVertices(m, cycle.order.size());
-  for (int index : cycle.order) (vi++)->P() = live[index]->cP();
+  for (int index : cycle.order)
+    (vi++)->P() = CMeshO::CoordType(static_cast<CMeshO::ScalarType>(positions(index, 0)),
+                                   static_cast<CMeshO::ScalarType>(positions(index, 1)),
+                                   static_cast<CMeshO::ScalarType>(positions(index, 2)));
   vcg::tri::Allocator<CMeshO>::AddEdges(m, cycle.order.size());
   for (size_t s = 0; s + 1 < cycle.segment_begin.size(); ++s) {
     const int b = cycle.segment_begin[s], e = cycle.segment_begin[s + 1];
@@ -54,7 +54,8 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions;
   hht::Faces faces;
-  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log)) return false;
+  std::vector<int> welded_of;  // merged seams: each mesh vertex's row
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, &welded_of)) return false;
 
   run.report(10, "Growing the ring");
   hht::CycleOptions options;
@@ -75,12 +76,12 @@ bool apply(FilterRun& run) {
   Eigen::VectorXd order_value(positions.rows());
   for (Eigen::Index v = 0; v < order_value.size(); ++v) order_value[v] = cycle.position[v];
   model.updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR);
-  hht::set_vertex_quality(model.cm, order_value);
+  hht::set_vertex_quality(model.cm, on_mesh_vertices(order_value, welded_of));
   vcg::tri::UpdateColor<CMeshO>::PerVertexQualityRamp(model.cm, 0.f, std::max(1.f, float(cycle.order.size()) - 1));
   for (auto& v : model.cm.vert)
     if (!v.IsD() && v.Q() < 0) v.C() = vcg::Color4b::Black;  // not on the cycle
   if (run.parameters.getBool("addCycleLayer"))
-    add_cycle_layer(run.document, model.cm, cycle, "Hamiltonian cycle of " + model.label());
+    add_cycle_layer(run.document, positions, cycle, "Hamiltonian cycle of " + model.label());
 
   const double n = static_cast<double>(positions.rows());
   run.log(QString("Hamiltonian cycle: %1 vertices, %2 on the cycle (%3%), %4 isolated (%5 attached by repair), "

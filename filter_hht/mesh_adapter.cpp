@@ -83,8 +83,28 @@ bool check_range(const QString& what, double value, double low, double high, QSt
   return false;
 }
 
-bool show_as_quality(MeshModel& model, const Eigen::VectorXd& values, double percent,
-                     std::pair<double, double>& range, QString& error) {
+Eigen::VectorXd on_mesh_vertices(const Eigen::VectorXd& values, const std::vector<int>& welded_of) {
+  if (welded_of.empty()) return values;
+  Eigen::VectorXd out(static_cast<Eigen::Index>(welded_of.size()));
+  for (size_t i = 0; i < welded_of.size(); ++i) out[static_cast<Eigen::Index>(i)] = values[welded_of[i]];
+  return out;
+}
+
+Eigen::VectorXd quality_on_rows(const CMeshO& m, const std::vector<int>& welded_of, Eigen::Index rows) {
+  Eigen::VectorXd out = Eigen::VectorXd::Constant(rows, std::numeric_limits<double>::quiet_NaN());
+  size_t i = 0;
+  for (const auto& v : m.vert) {
+    if (v.IsD()) continue;
+    const Eigen::Index row = welded_of.empty() ? static_cast<Eigen::Index>(i) : welded_of[i];
+    if (std::isnan(out[row])) out[row] = v.cQ();
+    ++i;
+  }
+  return out;
+}
+
+bool show_as_quality(MeshModel& model, const Eigen::VectorXd& row_values, double percent,
+                     std::pair<double, double>& range, QString& error, const std::vector<int>& welded_of) {
+  const Eigen::VectorXd values = on_mesh_vertices(row_values, welded_of);
   const double largest = std::numeric_limits<float>::max();
   Eigen::Index bad = 0;
   for (double value : values) bad += std::abs(value) <= largest ? 0 : 1;  // NaN counts too

@@ -53,8 +53,18 @@ bool check_range(const QString& what, double value, double low, double high, QSt
 // Writes `values` (one per live vertex) into vertex quality and colours the mesh by a ramp
 // over their [percent, 100 - percent] percentile range, returned in `range`. Refuses values
 // that are not finite in single precision (MeshLab's quality), leaving the mesh as it was.
+// With `welded_of` (read_mesh_to_filter's), `values` are one per row of the filter's arrays and
+// each copy of a merged vertex gets its row's.
 bool show_as_quality(MeshModel& model, const Eigen::VectorXd& values, double percent,
-                     std::pair<double, double>& range, QString& error);
+                     std::pair<double, double>& range, QString& error, const std::vector<int>& welded_of = {});
+
+// Values one per row of the filter's arrays as values of the mesh's live vertices (each copy of a
+// merged vertex its row's); `values` itself when nothing was merged.
+Eigen::VectorXd on_mesh_vertices(const Eigen::VectorXd& values, const std::vector<int>& welded_of);
+
+// The live vertices' quality, one per row of the filter's arrays (`rows` of them): a merged row
+// takes its first copy's.
+Eigen::VectorXd quality_on_rows(const CMeshO& m, const std::vector<int>& welded_of, Eigen::Index rows);
 
 // "  times (s): cycle 0.012, emd 0.003, ..., total 0.085"
 QString stage_times_line(const std::vector<hht::StageTime>& stages);

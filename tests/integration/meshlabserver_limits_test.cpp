@@ -196,29 +196,44 @@ INSTANTIATE_TEST_SUITE_P(Scripts, MisorientedFaces,
 // 0.0%") and the mesh was left as it was; given the noise, each face shrank on its own.
 class TriangleSoup : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(TriangleSoup, IsFilteredAsTheJoinedMesh) {
-  const std::string script = GetParam();
-  const std::string tag = script.substr(0, script.find('.'));
+// Fandisk's faces over `positions`, written to `tag`_joined_input.ply and, every face with three
+// vertices of its own (vertex 3 f + k is corner k of face f), to `tag`_soup_input.ply.
+std::pair<std::string, std::string> joined_and_soup(const Positions& positions, const Faces& faces, const std::string& tag) {
   TriMesh m;
-  ASSERT_EQ(vcg::tri::io::ImporterOFF<TriMesh>::Open(m, data_mesh("fandisk").c_str()), 0);
-  Positions clean;
-  Faces faces;
-  mesh_to_arrays(m, clean, faces);
-  const Positions noisy = add_gaussian_noise(clean, faces, 10, NoiseDirection::Isotropic, 7);
-  set_vertex_positions(m, noisy);
+  EXPECT_EQ(vcg::tri::io::ImporterOFF<TriMesh>::Open(m, data_mesh("fandisk").c_str()), 0);
+  set_vertex_positions(m, positions);
   const std::string joined_path = output_path(tag + "_joined_input.ply");
-  ASSERT_EQ(vcg::tri::io::ExporterPLY<TriMesh>::Save(m, joined_path.c_str(), 0, true), 0);
+  EXPECT_EQ(vcg::tri::io::ExporterPLY<TriMesh>::Save(m, joined_path.c_str(), 0, true), 0);
   TriMesh soup;
   const int nf = static_cast<int>(faces.rows());
   auto vi = vcg::tri::Allocator<TriMesh>::AddVertices(soup, 3 * nf);
   auto fi = vcg::tri::Allocator<TriMesh>::AddFaces(soup, nf);
   for (int f = 0; f < nf; ++f, ++fi)
     for (int k = 0; k < 3; ++k, ++vi) {
-      vi->P() = TriMesh::CoordType(noisy(faces(f, k), 0), noisy(faces(f, k), 1), noisy(faces(f, k), 2));
+      vi->P() = TriMesh::CoordType(positions(faces(f, k), 0), positions(faces(f, k), 1), positions(faces(f, k), 2));
       fi->V(k) = &*vi;
     }
   const std::string soup_path = output_path(tag + "_soup_input.ply");
-  ASSERT_EQ(vcg::tri::io::ExporterPLY<TriMesh>::Save(soup, soup_path.c_str(), 0, true), 0);
+  EXPECT_EQ(vcg::tri::io::ExporterPLY<TriMesh>::Save(soup, soup_path.c_str(), 0, true), 0);
+  return {joined_path, soup_path};
+}
+
+Faces fandisk_faces(Positions& positions) {
+  TriMesh m;
+  EXPECT_EQ(vcg::tri::io::ImporterOFF<TriMesh>::Open(m, data_mesh("fandisk").c_str()), 0);
+  Faces faces;
+  mesh_to_arrays(m, positions, faces);
+  return faces;
+}
+
+TEST_P(TriangleSoup, IsFilteredAsTheJoinedMesh) {
+  const std::string script = GetParam();
+  const std::string tag = script.substr(0, script.find('.'));
+  Positions clean;
+  const Faces faces = fandisk_faces(clean);
+  const int nf = static_cast<int>(faces.rows());
+  const Positions noisy = add_gaussian_noise(clean, faces, 10, NoiseDirection::Isotropic, 7);
+  const auto [joined_path, soup_path] = joined_and_soup(noisy, faces, tag);
 
   const ServerRun joined = run_script(MeshLab::V2020, {joined_path}, resource(script), tag + "_joined");
   const ServerRun run = run_script(MeshLab::V2020, {soup_path}, resource(script), tag + "_soup");
@@ -251,6 +266,31 @@ INSTANTIATE_TEST_SUITE_P(Scripts, TriangleSoup, ::testing::Values("smooth.mlx", 
                          [](const ::testing::TestParamInfo<std::string>& info) {
                            return info.param.substr(0, info.param.find('.'));
                          });
+
+// The analyses that write vertex quality read a soup as the joined mesh too: the curvature signal
+// of noisy Fandisk's soup gives every copy of a vertex the joined mesh's value there (the same to
+// single precision); without the merge each face alone gave boundary values (all of them off).
+TEST(TriangleSoupAnalysis, CurvatureSignalIsTheJoinedMeshs) {
+  Positions clean;
+  const Faces faces = fandisk_faces(clean);
+  const int nf = static_cast<int>(faces.rows());
+  const auto [joined_path, soup_path] =
+      joined_and_soup(add_gaussian_noise(clean, faces, 10, NoiseDirection::Isotropic, 7), faces, "curvature");
+  const ServerRun joined = run_script(MeshLab::V2020, {joined_path}, resource("curvature_signal.mlx"), "curvature_joined");
+  const ServerRun run = run_script(MeshLab::V2020, {soup_path}, resource("curvature_signal.mlx"), "curvature_soup");
+  TriMesh a, b;
+  bool qa = false, qb = false;
+  ASSERT_TRUE(load_ply(joined.output, a, qa) && qa) << joined.log;
+  ASSERT_TRUE(load_ply(run.output, b, qb) && qb) << run.log;
+  ASSERT_EQ(b.vn, 3 * nf);
+  double largest = 0, worst = 0;
+  for (int v = 0; v < a.vn; ++v) largest = std::max(largest, std::abs(double(a.vert[v].Q())));
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k)
+      worst = std::max(worst, std::abs(double(b.vert[3 * f + k].Q()) - double(a.vert[faces(f, k)].Q())));
+  EXPECT_LT(worst, 1e-5 * largest) << "a copy's curvature differs from the joined mesh's by " << worst;
+  EXPECT_NE(run.log.find("Seams: "), std::string::npos) << run.log;
+}
 
 }  // namespace
 }  // namespace hht::test
