@@ -1,5 +1,7 @@
 #include "mesh/border_weld.h"
 
+#include "mesh/breadth_first_patches.h"
+
 #include <algorithm>
 #include <numeric>
 
@@ -99,10 +101,6 @@ bool weld_coincident_border_vertices(const Positions& positions, const Faces& fa
   return true;
 }
 
-Positions unwelded(const Positions& welded, const std::vector<int>& welded_of) {
-  Positions out(static_cast<Eigen::Index>(welded_of.size()), 3);
-  for (size_t i = 0; i < welded_of.size(); ++i) out.row(static_cast<Eigen::Index>(i)) = welded.row(welded_of[i]);
-  return out;
-}
+Positions unwelded(const Positions& welded, const std::vector<int>& welded_of) { return rows_at(welded, welded_of); }
 
 }  // namespace hht
