@@ -1,7 +1,7 @@
 #include "mesh_adapter.h"
 
 #include "mesh/border_weld.h"
-#include "mesh/coherent_orientation.h"
+#include "mesh/filter_input.h"
 #include "mesh/mesh_checks.h"
 #include "mesh/value_range.h"
 #include "reconstruction/keep_untouched_vertices.h"
@@ -26,38 +26,30 @@ bool read_triangle_mesh(const CMeshO& m, hht::Positions& positions, hht::Faces& 
 bool read_mesh_to_filter(const CMeshO& m, hht::Positions& positions, hht::Faces& faces, QString& error,
                          const std::function<void(const QString&)>& log, std::vector<int>* welded_of) {
   if (!read_triangle_mesh(m, positions, faces, error)) return false;
-  if (welded_of) welded_of->clear();
-  // One corner table for both steps unless the seams are merged (0.27 s each at 3.3M faces).
-  hht::CornerTable table;
-  int inconsistent = 0;
-  std::string message;
-  if (!hht::build_corner_table(faces, static_cast<int>(positions.rows()), table, inconsistent, message))
-    return true;  // edges of more than two faces: the filter says so, or works without
-  hht::BorderWeld weld;
-  std::string why_not;
-  if (welded_of && hht::weld_coincident_border_vertices(positions, faces, table, weld, why_not)) {
+  std::vector<int> merged_rows;
+  hht::FilterInputReport report;
+  hht::prepare_filter_input(positions, faces, welded_of != nullptr, merged_rows, report);
+  if (report.merged > 0)
     log(QString("Seams: %1 of %2 vertices sat exactly on another at a border (faces not joined there, as in a "
                 "triangle soup or a mesh cut at texture seams): the filter worked on them merged%3 and gives each "
                 "copy the same result, so the seams stay closed (Cleaning and Repairing > Merge Close Vertices joins "
                 "them for good)")
-            .arg(weld.merged).arg(positions.rows())
-            .arg(weld.dropped_faces > 0 ? QString(", without the %1 faces that merging left with no area").arg(weld.dropped_faces)
-                                        : QString()));
-    positions = std::move(weld.positions);
-    faces = std::move(weld.faces);
-    *welded_of = std::move(weld.welded_of);
-    if (!hht::build_corner_table(faces, static_cast<int>(positions.rows()), table, inconsistent, message)) return true;
-  } else if (!why_not.empty()) {
-    log(QString("Seams: border vertices sit on each other but were left apart: %1").arg(QString::fromStdString(why_not)));
-  }
-  const hht::OrientationRepair repair = hht::orient_as_most_faces(faces, table, inconsistent);
+            .arg(report.merged).arg(merged_rows.size())
+            .arg(report.dropped_faces > 0
+                     ? QString(", without the %1 faces that merging left with no area").arg(report.dropped_faces)
+                     : QString()));
+  else if (!report.not_merged_why.empty())
+    log(QString("Seams: border vertices sit on each other but were left apart: %1")
+            .arg(QString::fromStdString(report.not_merged_why)));
+  const hht::OrientationRepair& repair = report.orientation;
   if (repair.flipped > 0)
     log(QString("Orientation: %1 of %2 faces (in %3 connected part%4) ran against their neighbours' orientation: the "
                 "filter worked on them turned to agree, the mesh's own faces are left as they were (Normals, Curvatures "
                 "and Orientation > Re-Orient all faces coherentely turns them for good)")
             .arg(repair.flipped).arg(faces.rows()).arg(repair.components).arg(repair.components == 1 ? "" : "s"));
-  else if (!repair.done)
+  else if (!repair.done && !repair.why_not.empty())
     log(QString("Orientation: the faces could not be checked: %1").arg(QString::fromStdString(repair.why_not)));
+  if (welded_of) *welded_of = std::move(merged_rows);
   return true;
 }
 

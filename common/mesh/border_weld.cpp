@@ -9,16 +9,17 @@ namespace hht {
 
 namespace {
 
-// Vertices whose faces, coherently oriented, form more than one fan; -1 with `error` when the
-// faces have an edge of more than two faces or no coherent orientation.
-int nonmanifold_vertices(const Faces& faces, int vertex_count, std::string& error) {
+// Vertices whose faces, coherently oriented, form more than one fan; kMoreThanTwoFaces or
+// kNoOrientation when the faces have an edge of more than two faces or no coherent orientation.
+constexpr int kMoreThanTwoFaces = -1, kNoOrientation = -2;
+int nonmanifold_vertices(const Faces& faces, int vertex_count) {
   CornerTable table;
   int inconsistent = 0;
-  if (!build_corner_table(faces, vertex_count, table, inconsistent, error)) return -1;
+  std::string error;
+  if (!build_corner_table(faces, vertex_count, table, inconsistent, error)) return kMoreThanTwoFaces;
   Faces oriented = faces;
-  if (!orient_faces_coherently(oriented, table, error) ||
-      !build_corner_table(oriented, vertex_count, table, inconsistent, error))
-    return -1;
+  if (!orient_faces_coherently(oriented, table, error)) return kNoOrientation;
+  build_corner_table(oriented, vertex_count, table, inconsistent, error);
   return count_nonmanifold_vertices(table, vertex_count);
 }
 
@@ -41,7 +42,6 @@ bool weld_coincident_border_vertices(const Positions& positions, const Faces& fa
   weld = BorderWeld{};
   why_not.clear();
   const int n = static_cast<int>(positions.rows());
-  std::string error;
   std::vector<int> border;
   {
     std::vector<unsigned char> on_border(n, 0);
@@ -82,13 +82,17 @@ bool weld_coincident_border_vertices(const Positions& positions, const Faces& fa
     welded_faces.row(kept++) << a, b, c;
   }
   welded_faces.conservativeResize(kept, 3);
-  const int after = nonmanifold_vertices(welded_faces, rows, error);
-  if (after < 0) {
-    why_not = "merged, " + error;
+  const int after = nonmanifold_vertices(welded_faces, rows);
+  if (after == kMoreThanTwoFaces) {
+    why_not = "merging them would leave edges of more than two faces";
     return false;
   }
-  // An input without a coherent orientation counts as having none: merging may still mend it.
-  if (after > std::max(0, nonmanifold_vertices(faces, n, error))) {
+  if (after == kNoOrientation) {
+    why_not = "merged, the surface would have no coherent orientation";
+    return false;
+  }
+  // An input without a coherent orientation counts as having none: merging may mend it.
+  if (after > std::max(0, nonmanifold_vertices(faces, n))) {
     why_not = "merging them would join parts at a single vertex";
     return false;
   }

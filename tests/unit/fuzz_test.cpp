@@ -21,7 +21,7 @@
 #include "filters/surface_emd.h"
 #include "filters/surface_emd_smoothing.h"
 #include "mesh/border_weld.h"
-#include "mesh/coherent_orientation.h"
+#include "mesh/filter_input.h"
 #include "mesh/mean_curvature.h"
 #include "mesh/mesh_checks.h"
 #include "mesh/sharp_features.h"
@@ -338,17 +338,12 @@ std::vector<Case> entry_points() {
        [](const Positions& p, const Faces& f) {
          Positions v = p;
          Faces faces = f;
-         BorderWeld weld;
-         std::string e;
          std::vector<int> welded_of;
-         if (weld_coincident_border_vertices(v, faces, weld, e)) {
-           v = weld.positions;
-           faces = weld.faces;
-           welded_of = weld.welded_of;
-         }
-         orient_as_most_faces(faces, static_cast<int>(v.rows()));
+         FilterInputReport input;
+         prepare_filter_input(v, faces, true, welded_of, input);
          NoiseAdaptiveSmoothingReport r;
          Positions out;
+         std::string e;
          if (!noise_adaptive_smooth(v, faces, {}, out, r, e)) return Outcome{false, e, {}};
          if (!welded_of.empty()) out = unwelded(out, welded_of);
          EXPECT_EQ(out.rows(), p.rows()) << "the result spread back has a row per input vertex";
