@@ -4,7 +4,7 @@
 // Markdown row per mesh: each stage's seconds, the total, the solver's iterations, the peak
 // resident memory of the process (input arrays included) and the peak during each stage the
 // progress callback names (the peak is reset at every change of stage). The first stage, input, is
-// the plugin's preparation of the arrays (filter_input.h: seams merged, faces oriented).
+// the plugin's preparation of the arrays (filter_input.h: seams merged, faces oriented, non-manifold vertices split).
 //   smoothing_bench smooth|enhance|denoise mesh.ply [more meshes]
 #include "bench_util.h"
 #include "filters/feature_preserving_denoise.h"
@@ -93,9 +93,9 @@ int main(int argc, char** argv) {
     hht::bench::reset_peak_memory();
     double input_seconds = 0;
     const double total = hht::bench::seconds([&] {
-      std::vector<int> welded_of;
+      hht::InputMap map;
       hht::FilterInputReport input;
-      input_seconds = hht::bench::seconds([&] { hht::prepare_filter_input(positions, faces, true, welded_of, input); });
+      input_seconds = hht::bench::seconds([&] { hht::prepare_filter_input(positions, faces, true, map, input); });
       ok = run(argv[1], positions, faces, result, r, error, [&](int percent, const char* stage) {
         peak = std::max(peak, hht::bench::memory_mb("VmHWM"));
         memory(percent, stage);

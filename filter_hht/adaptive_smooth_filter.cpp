@@ -33,8 +33,8 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions, result;
   hht::Faces faces;
-  std::vector<int> welded_of;  // merged seams: each mesh vertex's row
-  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, &welded_of)) return false;
+  hht::InputMap input_map;  // where each mesh vertex went (merged seams, split fans)
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, input_map)) return false;
   const RichParameterList& par = run.parameters;
   hht::NoiseAdaptiveSmoothingOptions options;
   options.strength = par.getFloat("strength");
@@ -50,7 +50,7 @@ bool apply(FilterRun& run) {
   auto progress = [&](int percent, const char* stage) { run.report(percent, stage); };
   if (!move_vertices_checked(model, positions, result, [&](hht::Positions& out, std::string& message) {
         return hht::noise_adaptive_smooth(positions, faces, options, out, report, message, progress);
-      }, run.error, welded_of))
+      }, run.error, input_map))
     return false;
   const double edge = hht::mean_edge_length(positions, faces);
   if (options.noise > 0)

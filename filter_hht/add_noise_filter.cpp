@@ -32,8 +32,8 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions;
   hht::Faces faces;
-  std::vector<int> welded_of;  // merged seams: each mesh vertex's row
-  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, &welded_of)) return false;
+  hht::InputMap input_map;  // where each mesh vertex went (merged seams, split fans)
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, input_map)) return false;
   const double percent = run.parameters.getFloat("sigmaPercent");
   if (!check_range("sigma", percent, 0, 1000, run.error, " percent of the mean edge length")) return false;
   const double share = run.parameters.getFloat("sharePercent");
@@ -48,7 +48,7 @@ bool apply(FilterRun& run) {
         out = hht::add_gaussian_noise(positions, faces, percent, direction,
                                       static_cast<unsigned>(run.parameters.getInt("seed")), share / 100.0);
         return true;
-      }, run.error, welded_of))
+      }, run.error, input_map))
     return false;
   const double edge = hht::mean_edge_length(positions, faces);
   const double rms = std::sqrt((noisy - positions).rowwise().squaredNorm().mean());

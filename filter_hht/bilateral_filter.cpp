@@ -23,8 +23,8 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions, result;
   hht::Faces faces;
-  std::vector<int> welded_of;  // merged seams: each mesh vertex's row
-  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, &welded_of)) return false;
+  hht::InputMap input_map;  // where each mesh vertex went (merged seams, split fans)
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, input_map)) return false;
   hht::BilateralOptions o;
   o.sigma_c = run.parameters.getFloat("sigmaC");
   o.sigma_s = run.parameters.getFloat("sigmaS");
@@ -38,7 +38,7 @@ bool apply(FilterRun& run) {
   if (!move_vertices_checked(model, positions, result, [&](hht::Positions& out, std::string&) {
         out = hht::bilateral_denoise(positions, faces, o);
         return true;
-      }, run.error, welded_of))
+      }, run.error, input_map))
     return false;
   run.log(QString("Bilateral mesh denoising: sigma_c %1, sigma_s %2 (x mean edge length), %3 passes; %4 s")
               .arg(o.sigma_c).arg(o.sigma_s).arg(o.passes).arg(clock.seconds(), 0, 'f', 3));

@@ -19,8 +19,8 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions;
   hht::Faces faces;
-  std::vector<int> welded_of;  // merged seams: each mesh vertex's row
-  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, &welded_of) ||
+  hht::InputMap input_map;  // where each mesh vertex went (merged seams, split fans)
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, input_map) ||
       !check_range("the colour ramp clipping", run.parameters.getFloat("rampPercentile"), 0, 50, run.error, " percent"))
     return false;
 
@@ -33,7 +33,7 @@ bool apply(FilterRun& run) {
   }
   run.report(90, "Writing the signal into vertex quality");
   std::pair<double, double> range;
-  if (!show_as_quality(model, curvature.signal, run.parameters.getFloat("rampPercentile"), range, run.error, welded_of))
+  if (!show_as_quality(model, curvature.signal, run.parameters.getFloat("rampPercentile"), range, run.error, input_map))
     return false;
   const Eigen::VectorXd& g = curvature.signal;
   run.log(QString("Curvature signal G = <L V, n> = 2H on %1 vertices: min %2, max %3, mean %4; "

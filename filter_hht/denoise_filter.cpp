@@ -141,8 +141,8 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions, result;
   hht::Faces faces;
-  std::vector<int> welded_of;  // merged seams: each mesh vertex's row
-  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, &welded_of)) return false;
+  hht::InputMap input_map;  // where each mesh vertex went (merged seams, split fans)
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, input_map)) return false;
   const RichParameterList& par = run.parameters;
   hht::DenoiseOptions o;
   o.noise = par.getFloat("noisePercent") / 100.0;
@@ -181,14 +181,13 @@ bool apply(FilterRun& run) {
   auto progress = [&](int percent, const char* stage) { run.report(percent, stage); };
   if (!move_vertices_checked(model, positions, result, [&](hht::Positions& out, std::string& message) {
         return hht::feature_preserving_denoise(positions, faces, o, out, report, message, progress);
-      }, run.error, welded_of))
+      }, run.error, input_map))
     return false;
   if (show == SelectFeatureVertices) {
     size_t i = 0;
     for (auto& v : model.cm.vert) {
       if (v.IsD()) continue;
-      const size_t row = welded_of.empty() ? i : static_cast<size_t>(welded_of[i]);
-      ++i;
+      const size_t row = static_cast<size_t>(input_map.row(static_cast<int>(i++)));
       if (report.type[row] != hht::FeatureType::None) v.SetS(); else v.ClearS();
     }
   } else if (show == FeatureLineLayer) {

@@ -23,8 +23,8 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions;
   hht::Faces faces;
-  std::vector<int> welded_of;  // merged seams: each mesh vertex's row
-  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, &welded_of)) return false;
+  hht::InputMap input_map;  // where each mesh vertex went (merged seams, split fans)
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, input_map)) return false;
   hht::SurfaceEmdSmoothingOptions options;
   if (!surface_emd_smoothing_options(run.parameters, options, run.error)) return false;
   options.feature_centric = true;
@@ -38,7 +38,7 @@ bool apply(FilterRun& run) {
   hht::SurfaceEmdSmoothingReport report;
   if (!move_vertices_checked(model, positions, result, [&](hht::Positions& out, std::string& message) {
         return hht::surface_emd_smoothing(positions, faces, options, out, report, message);
-      }, run.error, welded_of))
+      }, run.error, input_map))
     return false;
   run.log(QString("Feature-centric surface EMD: %1 feature vertices kept out of the envelopes; %2 IMFs, rebuilt from "
                   "residue %3; %4 factorisations; largest vertex move %5")

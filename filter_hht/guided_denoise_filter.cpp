@@ -38,8 +38,8 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions, result;
   hht::Faces faces;
-  std::vector<int> welded_of;  // merged seams: each mesh vertex's row
-  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, &welded_of)) return false;
+  hht::InputMap input_map;  // where each mesh vertex went (merged seams, split fans)
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, input_map)) return false;
   hht::GuidedNormalDenoiseOptions o;
   o.rounds = run.parameters.getInt("rounds");
   o.normal_passes = run.parameters.getInt("normalPasses");
@@ -58,7 +58,7 @@ bool apply(FilterRun& run) {
   hht::GuidedNormalDenoiseReport report;
   if (!move_vertices_checked(model, positions, result, [&](hht::Positions& out, std::string& message) {
         return hht::guided_normal_denoise(positions, faces, o, out, message, {}, &report);
-      }, run.error, welded_of))
+      }, run.error, input_map))
     return false;
   run.log(QString("%1 normal filtering denoise: %2 round(s) of %3 passes (sigma_r %4) and %5 vertex iterations; "
                   "%6 s")

@@ -54,8 +54,8 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions;
   hht::Faces faces;
-  std::vector<int> welded_of;  // merged seams: each mesh vertex's row
-  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, &welded_of)) return false;
+  hht::InputMap input_map;  // where each mesh vertex went (merged seams, split fans)
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, input_map)) return false;
 
   run.report(10, "Growing the ring");
   hht::CycleOptions options;
@@ -76,7 +76,13 @@ bool apply(FilterRun& run) {
   Eigen::VectorXd order_value(positions.rows());
   for (Eigen::Index v = 0; v < order_value.size(); ++v) order_value[v] = cycle.position[v];
   model.updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR);
-  hht::set_vertex_quality(model.cm, on_mesh_vertices(order_value, welded_of));
+  // Each mesh vertex takes its row's place on the cycle (a split vertex its first fan's).
+  const Eigen::Index live = input_map.row_of.empty()
+                                ? positions.rows() - static_cast<Eigen::Index>(input_map.copy_of.size())
+                                : static_cast<Eigen::Index>(input_map.row_of.size());
+  Eigen::VectorXd on_mesh(live);
+  for (Eigen::Index i = 0; i < live; ++i) on_mesh[i] = order_value[input_map.row(static_cast<int>(i))];
+  hht::set_vertex_quality(model.cm, on_mesh);
   vcg::tri::UpdateColor<CMeshO>::PerVertexQualityRamp(model.cm, 0.f, std::max(1.f, float(cycle.order.size()) - 1));
   for (auto& v : model.cm.vert)
     if (!v.IsD() && v.Q() < 0) v.C() = vcg::Color4b::Black;  // not on the cycle

@@ -46,8 +46,8 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions;
   hht::Faces faces;
-  std::vector<int> welded_of;  // merged seams: each mesh vertex's row
-  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, &welded_of)) return false;
+  hht::InputMap input_map;  // where each mesh vertex went (merged seams, split fans)
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, input_map)) return false;
   const RichParameterList& par = run.parameters;
   const int imf = par.getInt("imf") - 1;
   const int output = std::clamp(par.getEnum("output"), 0, 4);
@@ -67,7 +67,7 @@ bool apply(FilterRun& run) {
       run.error = "Nothing was changed: the mesh has no vertex quality to analyse.";
       return false;
     }
-    signal = quality_on_rows(model.cm, welded_of, positions.rows());
+    signal = quality_on_rows(model.cm, input_map, positions.rows());
   } else {
     run.report(2, "Curvature signal");
     hht::MeanCurvature curvature;
@@ -117,7 +117,7 @@ bool apply(FilterRun& run) {
   run.report(90, "Writing the result into vertex quality");
   const Eigen::VectorXd values = hht::quantity_on_vertices(cycle, decomposition, kOutputs[output], imf, faces);
   std::pair<double, double> range;
-  if (!show_as_quality(model, values, par.getFloat("rampPercentile"), range, run.error, welded_of)) return false;
+  if (!show_as_quality(model, values, par.getFloat("rampPercentile"), range, run.error, input_map)) return false;
 
   run.log(QString("Hilbert spectra of the %1 along the Hamiltonian cycle (%2 vertices, %3 on the cycle, %4 segment(s))")
               .arg(par.getEnum("source") == CurrentQuality ? "vertex quality" : "curvature signal G = 2H")

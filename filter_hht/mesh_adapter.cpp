@@ -1,6 +1,5 @@
 #include "mesh_adapter.h"
 
-#include "mesh/border_weld.h"
 #include "mesh/filter_input.h"
 #include "mesh/mesh_checks.h"
 #include "mesh/value_range.h"
@@ -9,6 +8,7 @@
 #include <vcg/complex/algorithms/update/color.h>
 
 #include <cmath>
+#include <set>
 #include <limits>
 
 namespace hht_plugin {
@@ -24,17 +24,17 @@ bool read_triangle_mesh(const CMeshO& m, hht::Positions& positions, hht::Faces& 
 }
 
 bool read_mesh_to_filter(const CMeshO& m, hht::Positions& positions, hht::Faces& faces, QString& error,
-                         const std::function<void(const QString&)>& log, std::vector<int>* welded_of) {
+                         const std::function<void(const QString&)>& log, hht::InputMap& map) {
   if (!read_triangle_mesh(m, positions, faces, error)) return false;
-  std::vector<int> merged_rows;
+  const Eigen::Index vertices = positions.rows();
   hht::FilterInputReport report;
-  hht::prepare_filter_input(positions, faces, welded_of != nullptr, merged_rows, report);
+  hht::prepare_filter_input(positions, faces, true, map, report);
   if (report.merged > 0)
     log(QString("Seams: %1 of %2 vertices sat exactly on another at a border (faces not joined there, as in a "
                 "triangle soup or a mesh cut at texture seams): the filter worked on them merged%3 and gives each "
                 "copy the same result, so the seams stay closed (Cleaning and Repairing > Merge Close Vertices joins "
                 "them for good)")
-            .arg(report.merged).arg(merged_rows.size())
+            .arg(report.merged).arg(vertices)
             .arg(report.dropped_faces > 0
                      ? QString(", without the %1 faces that merging left with no area").arg(report.dropped_faces)
                      : QString()));
@@ -49,7 +49,14 @@ bool read_mesh_to_filter(const CMeshO& m, hht::Positions& positions, hht::Faces&
             .arg(repair.flipped).arg(faces.rows()).arg(repair.components).arg(repair.components == 1 ? "" : "s"));
   else if (!repair.done && !repair.why_not.empty())
     log(QString("Orientation: the faces could not be checked: %1").arg(QString::fromStdString(repair.why_not)));
-  if (welded_of) *welded_of = std::move(merged_rows);
+  if (report.split > 0) {
+    const int split_vertices = static_cast<int>(std::set<int>(map.copy_of.begin(), map.copy_of.end()).size());
+    log(QString("Non-manifold: %1 where several fans of faces meet: the filter worked on one copy per fan (%2 more) "
+                "and gives each its copies' results averaged, so the mesh stays as connected as it was (Cleaning and "
+                "Repairing > Repair non Manifold Vertices by splitting splits them for good)")
+            .arg(split_vertices == 1 ? QString("1 vertex") : QString("%1 vertices").arg(split_vertices))
+            .arg(report.split));
+  }
   return true;
 }
 
@@ -58,13 +65,13 @@ QString nothing_changed(const std::string& why) {
 }
 
 bool move_vertices_checked(MeshModel& model, const hht::Positions& positions, hht::Positions& result,
-                           const PositionsWork& work, QString& error, const std::vector<int>& welded_of) {
+                           const PositionsWork& work, QString& error, const hht::InputMap& map) {
   std::string message;
   if (!work(result, message) || !hht::check_result_positions(positions, result, message)) {
     error = nothing_changed(message);
     return false;
   }
-  hht::set_vertex_positions(model.cm, welded_of.empty() ? result : hht::unwelded(result, welded_of));
+  hht::set_vertex_positions(model.cm, hht::to_input_vertices(result, map));
   update_box_and_normals(model);
   return true;
 }
@@ -75,28 +82,22 @@ bool check_range(const QString& what, double value, double low, double high, QSt
   return false;
 }
 
-Eigen::VectorXd on_mesh_vertices(const Eigen::VectorXd& values, const std::vector<int>& welded_of) {
-  if (welded_of.empty()) return values;
-  Eigen::VectorXd out(static_cast<Eigen::Index>(welded_of.size()));
-  for (size_t i = 0; i < welded_of.size(); ++i) out[static_cast<Eigen::Index>(i)] = values[welded_of[i]];
-  return out;
-}
-
-Eigen::VectorXd quality_on_rows(const CMeshO& m, const std::vector<int>& welded_of, Eigen::Index rows) {
+Eigen::VectorXd quality_on_rows(const CMeshO& m, const hht::InputMap& map, Eigen::Index rows) {
   Eigen::VectorXd out = Eigen::VectorXd::Constant(rows, std::numeric_limits<double>::quiet_NaN());
-  size_t i = 0;
+  int i = 0;
   for (const auto& v : m.vert) {
     if (v.IsD()) continue;
-    const Eigen::Index row = welded_of.empty() ? static_cast<Eigen::Index>(i) : welded_of[i];
+    const Eigen::Index row = map.row(i++);
     if (std::isnan(out[row])) out[row] = v.cQ();
-    ++i;
   }
+  const Eigen::Index base = rows - static_cast<Eigen::Index>(map.copy_of.size());
+  for (size_t k = 0; k < map.copy_of.size(); ++k) out[base + static_cast<Eigen::Index>(k)] = out[map.copy_of[k]];
   return out;
 }
 
 bool show_as_quality(MeshModel& model, const Eigen::VectorXd& row_values, double percent,
-                     std::pair<double, double>& range, QString& error, const std::vector<int>& welded_of) {
-  const Eigen::VectorXd values = on_mesh_vertices(row_values, welded_of);
+                     std::pair<double, double>& range, QString& error, const hht::InputMap& map) {
+  const Eigen::VectorXd values = hht::to_input_vertices(row_values, map);
   const double largest = std::numeric_limits<float>::max();
   Eigen::Index bad = 0;
   for (double value : values) bad += std::abs(value) <= largest ? 0 : 1;  // NaN counts too

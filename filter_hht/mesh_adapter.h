@@ -4,6 +4,7 @@
 
 #include "cycle/cycle_decomposition.h"
 #include "filters/noise_adaptive_smoothing.h"
+#include "mesh/filter_input.h"
 #include "mesh/mesh_arrays.h"
 #include "signal/noise_estimate.h"
 #include "util/stage_clock.h"
@@ -21,14 +22,12 @@ namespace hht_plugin {
 // Arrays of `m`'s live vertices and faces; fails with a message on an empty or broken mesh.
 bool read_triangle_mesh(const CMeshO& m, hht::Positions& positions, hht::Faces& faces, QString& error);
 
-// read_triangle_mesh for a filter that works on the mesh. With `welded_of`, border vertices at the
-// same position are merged in the arrays (hht::weld_coincident_border_vertices: a triangle soup or
-// a surface cut at seams made whole) and `welded_of` gets each mesh vertex's row (left empty when
-// nothing was merged); then faces oriented against their neighbours are turned in `faces`
-// (hht::orient_as_most_faces), so that the normals the filter computes agree. The mesh itself is
-// left as it is. Says in `log` what was merged and turned.
+// read_triangle_mesh for a filter that works on the mesh: its arrays prepared by
+// hht::prepare_filter_input (seams merged, faces against their neighbours turned, non-manifold
+// vertices split one per fan; `map` says where each mesh vertex went). The mesh itself is left as
+// it is. Says in `log` what was merged, turned and split.
 bool read_mesh_to_filter(const CMeshO& m, hht::Positions& positions, hht::Faces& faces, QString& error,
-                         const std::function<void(const QString&)>& log, std::vector<int>* welded_of = nullptr);
+                         const std::function<void(const QString&)>& log, hht::InputMap& map);
 
 // The error of a filter that stopped before touching the mesh: "Nothing was changed: <why>.".
 QString nothing_changed(const std::string& why);
@@ -41,9 +40,9 @@ using PositionsWork = std::function<bool(hht::Positions& result, std::string& er
 // finite or moved a vertex farther than hht::kMaxMoveDiagonals bounding-box diagonals
 // (hht::check_result_positions), and only then writes it into the mesh, box and normals
 // updated. On false the mesh is exactly as it was and `error` is "Nothing was changed: ...".
-// With `welded_of` (read_mesh_to_filter's) the result is spread to the merged vertices.
+// With `map` (read_mesh_to_filter's) the result goes back to the mesh's vertices (hht::to_input_vertices).
 bool move_vertices_checked(MeshModel& model, const hht::Positions& positions, hht::Positions& result,
-                           const PositionsWork& work, QString& error, const std::vector<int>& welded_of = {});
+                           const PositionsWork& work, QString& error, const hht::InputMap& map = {});
 
 // Refuses a parameter outside [low, high] (NaN included) with a message naming it and the range
 // ("Nothing was changed: <what> must lie in [low, high]<why>, not <value>.").
@@ -53,18 +52,14 @@ bool check_range(const QString& what, double value, double low, double high, QSt
 // Writes `values` (one per live vertex) into vertex quality and colours the mesh by a ramp
 // over their [percent, 100 - percent] percentile range, returned in `range`. Refuses values
 // that are not finite in single precision (MeshLab's quality), leaving the mesh as it was.
-// With `welded_of` (read_mesh_to_filter's), `values` are one per row of the filter's arrays and
-// each copy of a merged vertex gets its row's.
+// With `map` (read_mesh_to_filter's), `values` are one per row of the filter's arrays and go back
+// to the mesh's vertices (hht::to_input_vertices).
 bool show_as_quality(MeshModel& model, const Eigen::VectorXd& values, double percent,
-                     std::pair<double, double>& range, QString& error, const std::vector<int>& welded_of = {});
-
-// Values one per row of the filter's arrays as values of the mesh's live vertices (each copy of a
-// merged vertex its row's); `values` itself when nothing was merged.
-Eigen::VectorXd on_mesh_vertices(const Eigen::VectorXd& values, const std::vector<int>& welded_of);
+                     std::pair<double, double>& range, QString& error, const hht::InputMap& map = {});
 
 // The live vertices' quality, one per row of the filter's arrays (`rows` of them): a merged row
-// takes its first copy's.
-Eigen::VectorXd quality_on_rows(const CMeshO& m, const std::vector<int>& welded_of, Eigen::Index rows);
+// takes its first vertex's, a split fan's row its vertex's.
+Eigen::VectorXd quality_on_rows(const CMeshO& m, const hht::InputMap& map, Eigen::Index rows);
 
 // "  times (s): cycle 0.012, emd 0.003, ..., total 0.085"
 QString stage_times_line(const std::vector<hht::StageTime>& stages);

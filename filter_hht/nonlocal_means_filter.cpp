@@ -25,8 +25,8 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions, result;
   hht::Faces faces;
-  std::vector<int> welded_of;  // merged seams: each mesh vertex's row
-  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, &welded_of)) return false;
+  hht::InputMap input_map;  // where each mesh vertex went (merged seams, split fans)
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, input_map)) return false;
   hht::NonLocalMeansOptions o;
   o.eta1 = run.parameters.getFloat("eta1");
   o.eta2 = run.parameters.getFloat("eta2");
@@ -42,7 +42,7 @@ bool apply(FilterRun& run) {
   if (!move_vertices_checked(model, positions, result, [&](hht::Positions& out, std::string&) {
         out = hht::nonlocal_means_denoise(positions, faces, o);
         return true;
-      }, run.error, welded_of))
+      }, run.error, input_map))
     return false;
   run.log(QString("Non-local means denoising: eta1 %1, eta2 %2, eta3 %3 (x mean edge length), %4 iterations; %5 s")
               .arg(o.eta1).arg(o.eta2).arg(o.eta3).arg(o.iterations).arg(clock.seconds(), 0, 'f', 3));

@@ -63,8 +63,8 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions, result;
   hht::Faces faces;
-  std::vector<int> welded_of;  // merged seams: each mesh vertex's row
-  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, &welded_of)) return false;
+  hht::InputMap input_map;  // where each mesh vertex went (merged seams, split fans)
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, input_map)) return false;
   const RichParameterList& par = run.parameters;
 
   hht::SpectralMeshFilterOptions options;
@@ -105,7 +105,7 @@ bool apply(FilterRun& run) {
   auto progress = [&](int percent, const char* stage) { run.report(percent, stage); };
   if (!move_vertices_checked(model, positions, result, [&](hht::Positions& out, std::string& message) {
         return hht::spectral_mesh_filter(positions, faces, options, out, report, message, progress);
-      }, run.error, welded_of))
+      }, run.error, input_map))
     return false;
 
   const double diagonal = (positions.colwise().maxCoeff() - positions.colwise().minCoeff()).norm();

@@ -37,8 +37,8 @@ bool apply(FilterRun& run) {
   MeshModel& model = *run.document.mm();
   hht::Positions positions;
   hht::Faces faces;
-  std::vector<int> welded_of;  // merged seams: each mesh vertex's row
-  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, &welded_of)) return false;
+  hht::InputMap input_map;  // where each mesh vertex went (merged seams, split fans)
+  if (!read_mesh_to_filter(model.cm, positions, faces, run.error, run.log, input_map)) return false;
   const RichParameterList& par = run.parameters;
   hht::SurfaceEmdSmoothingOptions options;
   if (!surface_emd_smoothing_options(par, options, run.error) ||
@@ -58,7 +58,7 @@ bool apply(FilterRun& run) {
     hht::SurfaceEmdSmoothingReport report;
     if (!move_vertices_checked(model, positions, result, [&](hht::Positions& out, std::string& why) {
           return hht::surface_emd_smoothing(positions, faces, options, out, report, why);
-        }, run.error, welded_of))
+        }, run.error, input_map))
       return false;
     run.log(QString("Surface EMD smoothing: %1 IMFs (sifts per IMF: %2), rebuilt from residue %3; %4 "
                     "factorisations; largest vertex move %5")
@@ -82,7 +82,7 @@ bool apply(FilterRun& run) {
       run.error = "Nothing was changed: the mesh has no vertex quality to decompose.";
       return false;
     }
-    signal = quality_on_rows(model.cm, welded_of, positions.rows());
+    signal = quality_on_rows(model.cm, input_map, positions.rows());
   } else {
     hht::MeanCurvature curvature;
     if (!hht::mean_curvature(positions, faces, curvature, message)) {
@@ -110,7 +110,7 @@ bool apply(FilterRun& run) {
     for (int k = std::min(options.residue, count); k < count; ++k) values += decomposition.imfs[k];
   }
   std::pair<double, double> range;
-  if (!show_as_quality(model, values, par.getFloat("rampPercentile"), range, run.error, welded_of)) return false;
+  if (!show_as_quality(model, values, par.getFloat("rampPercentile"), range, run.error, input_map)) return false;
   QStringList sifts;
   for (int k : decomposition.sifts) sifts << QString::number(k);
   run.log(QString("Surface EMD of the %1: %2 IMFs (sifts per IMF: %3), %4 factorisations")

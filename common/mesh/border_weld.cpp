@@ -1,7 +1,5 @@
 #include "mesh/border_weld.h"
 
-#include "mesh/breadth_first_patches.h"
-
 #include <algorithm>
 #include <numeric>
 
@@ -104,7 +102,5 @@ bool weld_coincident_border_vertices(const Positions& positions, const Faces& fa
   weld.dropped_faces = dropped;
   return true;
 }
-
-Positions unwelded(const Positions& welded, const std::vector<int>& welded_of) { return rows_at(welded, welded_of); }
 
 }  // namespace hht

@@ -34,7 +34,4 @@ bool weld_coincident_border_vertices(const Positions& positions, const Faces& fa
 bool weld_coincident_border_vertices(const Positions& positions, const Faces& faces, const CornerTable& table,
                                      BorderWeld& weld, std::string& why_not);
 
-// `welded` (one row per merged vertex) spread back to the input's vertices.
-Positions unwelded(const Positions& welded, const std::vector<int>& welded_of);
-
 }  // namespace hht

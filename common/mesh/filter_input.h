@@ -1,27 +1,57 @@
 // The surface a filter works on, made whole from what MeshLab holds: border vertices at the same
-// position merged (border_weld.h: a triangle soup, a surface cut at seams), then faces oriented
-// against their neighbours turned (coherent_orientation.h). One corner table serves both steps
-// unless the merge changes the faces (0.28 s for both at 3.3M faces; docs/quality.md item 42).
+// position merged (border_weld.h: a triangle soup, a surface cut at seams), faces oriented against
+// their neighbours turned (coherent_orientation.h), then vertices where several fans of faces meet
+// split, one per fan (vertex_split.h). One corner table serves the first two steps unless the merge
+// changes the faces (0.28 s at 3.3M faces; docs/quality.md items 42 and 43).
 #pragma once
 
 #include "mesh/border_weld.h"
 #include "mesh/coherent_orientation.h"
+#include "mesh/vertex_split.h"
 
 #include <string>
 #include <vector>
 
 namespace hht {
 
+// Which row of the filter's arrays each input vertex became. `row_of` empty: row i is vertex i;
+// `copy_of`: the rows appended by the split, each the row it copies.
+struct InputMap {
+  std::vector<int> row_of;
+  std::vector<int> copy_of;
+  bool identity() const { return row_of.empty() && copy_of.empty(); }
+  int row(int vertex) const { return row_of.empty() ? vertex : row_of[vertex]; }
+};
+
 struct FilterInputReport {
-  int merged = 0;               // vertices merged into another (0: `welded_of` left empty)
+  int merged = 0;               // vertices merged into another
   int dropped_faces = 0;        // faces the merge left with no area
   std::string not_merged_why;   // border vertices on each other, left apart: why
   OrientationRepair orientation;  // done false with an empty why_not: edges of more than two faces, not checked
+  int split = 0;                // vertices added by splitting non-manifold ones
 };
 
-// Merges (when `merge_seams`) and orients `positions` and `faces` in place; `welded_of` gets each
-// input vertex's row when vertices were merged, and is emptied otherwise.
-void prepare_filter_input(Positions& positions, Faces& faces, bool merge_seams, std::vector<int>& welded_of,
-                          FilterInputReport& report);
+// Orients `positions` and `faces` in place and, with `mend`, merges the seams first and splits the
+// non-manifold vertices last; `map` says where each input vertex went.
+void prepare_filter_input(Positions& positions, Faces& faces, bool mend, InputMap& map, FilterInputReport& report);
+
+// A filter's result (one row per row of its arrays) as one row per input vertex: each vertex gets
+// its row's, averaged with the row's split copies.
+template <class Matrix>
+Matrix to_input_vertices(const Matrix& rows, const InputMap& map) {
+  if (map.identity()) return rows;
+  const Eigen::Index base = rows.rows() - static_cast<Eigen::Index>(map.copy_of.size());
+  Matrix merged = rows.topRows(base);
+  Eigen::VectorXd count = Eigen::VectorXd::Ones(base);
+  for (size_t k = 0; k < map.copy_of.size(); ++k) {
+    merged.row(map.copy_of[k]) += rows.row(base + static_cast<Eigen::Index>(k));
+    count[map.copy_of[k]] += 1;
+  }
+  for (Eigen::Index r = 0; r < base; ++r) merged.row(r) /= count[r];
+  if (map.row_of.empty()) return merged;
+  Matrix out(static_cast<Eigen::Index>(map.row_of.size()), rows.cols());
+  for (size_t i = 0; i < map.row_of.size(); ++i) out.row(static_cast<Eigen::Index>(i)) = merged.row(map.row_of[i]);
+  return out;
+}
 
 }  // namespace hht

@@ -22,14 +22,14 @@ TEST(FilterInput, MakesASoupWithFacesAgainstTheirNeighboursOneOrientedSurface) {
   }
   Positions p = soup;
   Faces g = faces;
-  std::vector<int> welded_of;
+  InputMap map;
   FilterInputReport report;
-  prepare_filter_input(p, g, true, welded_of, report);
+  prepare_filter_input(p, g, true, map, report);
   EXPECT_EQ(p.rows(), m.positions.rows());
   EXPECT_EQ(report.merged, 3 * nf - m.positions.rows());
   EXPECT_EQ(report.orientation.flipped, nf / 2);
-  ASSERT_EQ(welded_of.size(), static_cast<size_t>(3 * nf));
-  for (int i = 0; i < 3 * nf; ++i) EXPECT_EQ(p.row(welded_of[i]), soup.row(i));
+  ASSERT_EQ(map.row_of.size(), static_cast<size_t>(3 * nf));
+  for (int i = 0; i < 3 * nf; ++i) EXPECT_EQ(p.row(map.row(i)), soup.row(i));
   CornerTable table;
   int inconsistent = -1;
   std::string error;
@@ -38,15 +38,15 @@ TEST(FilterInput, MakesASoupWithFacesAgainstTheirNeighboursOneOrientedSurface) {
 
   p = soup;
   g = faces;
-  prepare_filter_input(p, g, false, welded_of, report);
-  EXPECT_TRUE(welded_of.empty());
+  prepare_filter_input(p, g, false, map, report);
+  EXPECT_TRUE(map.identity());
   EXPECT_EQ(report.merged, 0);
   EXPECT_EQ(report.orientation.flipped, 0) << "a soup's faces have no neighbours to disagree with";
 
   p = m.positions;
   g = m.faces;
-  prepare_filter_input(p, g, true, welded_of, report);
-  EXPECT_TRUE(welded_of.empty());
+  prepare_filter_input(p, g, true, map, report);
+  EXPECT_TRUE(map.identity());
   EXPECT_TRUE(p == m.positions && g == m.faces);
 }
 

@@ -20,7 +20,6 @@
 #include "filters/spectral_mesh_filter.h"
 #include "filters/surface_emd.h"
 #include "filters/surface_emd_smoothing.h"
-#include "mesh/border_weld.h"
 #include "mesh/filter_input.h"
 #include "mesh/mean_curvature.h"
 #include "mesh/mesh_checks.h"
@@ -338,15 +337,15 @@ std::vector<Case> entry_points() {
        [](const Positions& p, const Faces& f) {
          Positions v = p;
          Faces faces = f;
-         std::vector<int> welded_of;
+         InputMap map;
          FilterInputReport input;
-         prepare_filter_input(v, faces, true, welded_of, input);
+         prepare_filter_input(v, faces, true, map, input);
          NoiseAdaptiveSmoothingReport r;
          Positions out;
          std::string e;
          if (!noise_adaptive_smooth(v, faces, {}, out, r, e)) return Outcome{false, e, {}};
-         if (!welded_of.empty()) out = unwelded(out, welded_of);
-         EXPECT_EQ(out.rows(), p.rows()) << "the result spread back has a row per input vertex";
+         out = to_input_vertices(out, map);
+         EXPECT_EQ(out.rows(), p.rows()) << "the result brought back has a row per input vertex";
          return Outcome{true, "", {out}};
        }},
       {"Bilateral", true,
