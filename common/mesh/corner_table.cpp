@@ -119,6 +119,24 @@ bool orient_faces_coherently(Faces& faces, const CornerTable& table, std::string
   return true;
 }
 
+void walk_fan(const CornerTable& table, int c, std::vector<char>& seen, std::vector<int>& fan) {
+  // Within one fan, the next corner at the same vertex is next(opposite(next(c))).
+  for (int x = c; x >= 0 && !seen[x];) {
+    seen[x] = 1;
+    fan.push_back(x);
+    const int o = table.opposite[corner_next(x)];
+    x = o < 0 ? -1 : corner_next(o);
+  }
+  for (int x = c;;) {
+    const int o = table.opposite[corner_prev(x)];
+    if (o < 0) break;
+    x = corner_prev(o);
+    if (seen[x]) break;
+    seen[x] = 1;
+    fan.push_back(x);
+  }
+}
+
 int count_nonmanifold_vertices(const CornerTable& table, int vertex_count) {
   std::vector<int> incident(vertex_count, 0), fans(vertex_count, 0), outgoing_boundary(vertex_count, 0);
   std::vector<char> seen(table.corners(), 0);
@@ -126,23 +144,11 @@ int count_nonmanifold_vertices(const CornerTable& table, int vertex_count) {
     ++incident[table.vertex[c]];
     if (table.opposite[c] < 0) ++outgoing_boundary[table.vertex[corner_next(c)]];
   }
-  // Swing around each vertex: within one fan, the next corner at the same vertex is
-  // next(opposite(next(c))); a fan open at a boundary is walked both ways.
+  std::vector<int> fan;
   for (int c = 0; c < table.corners(); ++c) {
     if (seen[c]) continue;
     ++fans[table.vertex[c]];
-    for (int x = c; x >= 0 && !seen[x];) {
-      seen[x] = 1;
-      const int o = table.opposite[corner_next(x)];
-      x = o < 0 ? -1 : corner_next(o);
-    }
-    for (int x = c;;) {
-      const int o = table.opposite[corner_prev(x)];
-      if (o < 0) break;
-      x = corner_prev(o);
-      if (seen[x]) break;
-      seen[x] = 1;
-    }
+    walk_fan(table, c, seen, fan);
   }
   int bad = 0;
   for (int v = 0; v < vertex_count; ++v)

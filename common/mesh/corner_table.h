@@ -34,6 +34,11 @@ bool build_corner_table(const Faces& faces, int vertex_count, CornerTable& table
 // component at a time. Fails on a non-orientable component (a Moebius strip).
 bool orient_faces_coherently(Faces& faces, const CornerTable& table, std::string& error);
 
+// Appends to `fan` the corners of c's fan (the faces around vertex[c] joined across edges at it),
+// marking each in `seen` (one flag per corner): swung forward, and back from c where the fan is
+// open at a boundary. Needs a coherently oriented table.
+void walk_fan(const CornerTable& table, int c, std::vector<char>& seen, std::vector<int>& fan);
+
 // Counts vertices whose incident faces form more than one fan (two cones touching at a
 // tip), and vertices where two boundary loops meet. Needs a coherently oriented table.
 int count_nonmanifold_vertices(const CornerTable& table, int vertex_count);

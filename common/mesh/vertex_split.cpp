@@ -8,23 +8,8 @@ int split_nonmanifold_vertices(Faces& faces, const CornerTable& table, int verte
   std::vector<int> fan;
   for (int c = 0; c < table.corners(); ++c) {
     if (seen[c]) continue;
-    // The corners of c's fan: swing forward (next(opposite(next(x)))), and back from c where the
-    // fan is open at a boundary (count_nonmanifold_vertices walks the same way).
     fan.clear();
-    for (int x = c; x >= 0 && !seen[x];) {
-      seen[x] = 1;
-      fan.push_back(x);
-      const int o = table.opposite[corner_next(x)];
-      x = o < 0 ? -1 : corner_next(o);
-    }
-    for (int x = c;;) {
-      const int o = table.opposite[corner_prev(x)];
-      if (o < 0) break;
-      x = corner_prev(o);
-      if (seen[x]) break;
-      seen[x] = 1;
-      fan.push_back(x);
-    }
+    walk_fan(table, c, seen, fan);
     const int v = table.vertex[c];
     if (!has_fan[v]) {
       has_fan[v] = 1;

@@ -304,22 +304,7 @@ class NonManifoldVertex : public ::testing::TestWithParam<std::string> {};
 TEST_P(NonManifoldVertex, IsSplitForTheFilterAndJoinedAgain) {
   const std::string script = GetParam();
   const std::string tag = script.substr(0, script.find('.'));
-  const ArrayMesh a = sphere(3);
-  ArrayMesh both = disjoint_union(a, a);
-  const int n = a.vertices();
-  const Eigen::RowVector3d shift = a.positions.row(0) * 2;
-  for (int i = n; i < 2 * n; ++i) both.positions.row(i) = -both.positions.row(i) + shift;
-  for (Eigen::Index f = a.faces.rows(); f < both.faces.rows(); ++f) {
-    std::swap(both.faces(f, 1), both.faces(f, 2));
-    for (int k = 0; k < 3; ++k)
-      if (both.faces(f, k) == n) both.faces(f, k) = 0;
-  }
-  // Vertex n now belongs to no face: drop it by moving the last vertex into its place.
-  both.positions.row(n) = both.positions.row(2 * n - 1);
-  both.positions.conservativeResize(2 * n - 1, 3);
-  for (Eigen::Index f = 0; f < both.faces.rows(); ++f)
-    for (int k = 0; k < 3; ++k)
-      if (both.faces(f, k) == 2 * n - 1) both.faces(f, k) = n;
+  const ArrayMesh both = touching_spheres(3);
   const Positions noisy = add_gaussian_noise(both.positions, both.faces, 20, NoiseDirection::Isotropic, 5);
   TriMesh m;
   auto vi = vcg::tri::Allocator<TriMesh>::AddVertices(m, noisy.rows());

@@ -121,6 +121,26 @@ ArrayMesh disjoint_union(const ArrayMesh& a, const ArrayMesh& b) {
   return u;
 }
 
+ArrayMesh touching_spheres(int subdivisions) {
+  const ArrayMesh a = sphere(subdivisions);
+  const int n = a.vertices();
+  ArrayMesh both = disjoint_union(a, a);
+  // The second sphere mirrored through vertex 0 of the first (its faces turned back outwards), its
+  // own vertex 0 replaced by the first's, and its last vertex moved into the freed place.
+  const Eigen::RowVector3d shift = a.positions.row(0) * 2;
+  for (int i = n; i < 2 * n; ++i) both.positions.row(i) = -both.positions.row(i) + shift;
+  for (Eigen::Index f = a.faces.rows(); f < both.faces.rows(); ++f) {
+    std::swap(both.faces(f, 1), both.faces(f, 2));
+    for (int k = 0; k < 3; ++k) {
+      if (both.faces(f, k) == n) both.faces(f, k) = 0;
+      else if (both.faces(f, k) == 2 * n - 1) both.faces(f, k) = n;
+    }
+  }
+  both.positions.row(n) = both.positions.row(2 * n - 1);
+  both.positions.conservativeResize(2 * n - 1, 3);
+  return both;
+}
+
 ArrayMesh flip_random_edges(const ArrayMesh& m, int flips, unsigned seed) {
   ArrayMesh out = m;
   CornerTable t;

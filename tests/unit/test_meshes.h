@@ -23,6 +23,8 @@ ArrayMesh grid(int nx, int ny);
 ArrayMesh torus(double major, double minor, int major_steps, int minor_steps);
 ArrayMesh remove_faces(const ArrayMesh& m, int every);  // drop every `every`-th face region: holes
 ArrayMesh disjoint_union(const ArrayMesh& a, const ArrayMesh& b);
+// Two spheres touching at vertex 0, which both share: a non-manifold vertex (two fans of faces).
+ArrayMesh touching_spheres(int subdivisions);
 ArrayMesh flip_random_edges(const ArrayMesh& m, int flips, unsigned seed);
 // Each triangle cut into four at its edges' midpoints: the same surface, meshed twice as finely.
 ArrayMesh midpoint_subdivision(const ArrayMesh& m);
