@@ -1,8 +1,9 @@
 // The surface a filter works on, made whole from what MeshLab holds: border vertices at the same
 // position merged (border_weld.h: a triangle soup, a surface cut at seams), faces oriented against
 // their neighbours turned (coherent_orientation.h), then vertices where several fans of faces meet
-// split, one per fan (vertex_split.h). One corner table serves the first two steps unless the merge
-// changes the faces (0.28 s at 3.3M faces; docs/quality.md items 42 and 43).
+// split, one per fan (vertex_split.h). One corner table serves all three unless the merge or the
+// orientation changes the faces (0.5 s at 3.3M faces, half of it the walk over the fans;
+// docs/quality.md items 42 and 43).
 #pragma once
 
 #include "mesh/border_weld.h"
