@@ -1,6 +1,7 @@
 #include "mesh/corner_table.h"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
 namespace hht {
@@ -21,10 +22,52 @@ void group_corners_by_edge(const CornerTable& t, int vertex_count, std::vector<i
     corners[fill[std::min(t.vertex[corner_next(c)], t.vertex[corner_prev(c)])]++] = c;
 }
 
-}  // namespace
+// The corners c[0..k) facing one edge of more than two faces paired two by two, the best pair
+// first: two faces of one part of the surface without such edges (`part`: a surface with a fin on
+// it stays closed, the fin comes off), then faces whose orientations agree across the edge (a
+// coherent sheet's sides do), then the pair nearest to lying flat across the edge (their third
+// vertices most opposite seen along it). A face without a partner is left unpaired. Returns the
+// pairs whose orientations disagree.
+int pair_sheets(const Positions& p, const std::vector<int>& part, const std::vector<int>& vertex, const int* c, int k,
+                std::vector<int>& opposite) {
+  const int a = vertex[corner_next(c[0])], b = vertex[corner_prev(c[0])];
+  const Eigen::RowVector3d axis = (p.row(b) - p.row(a)).normalized();
+  std::vector<Eigen::RowVector3d> side(k);
+  for (int i = 0; i < k; ++i) {
+    const Eigen::RowVector3d u = p.row(vertex[c[i]]) - p.row(a);
+    side[i] = u - u.dot(axis) * axis;
+    const double length = side[i].norm();
+    side[i] = length > 0 && std::isfinite(length) ? Eigen::RowVector3d(side[i] / length) : Eigen::RowVector3d::Zero();
+  }
+  const auto disagree = [&](int i, int j) { return vertex[corner_next(c[i])] != vertex[corner_prev(c[j])]; };
+  std::vector<char> paired(k, 0);
+  int disagreeing = 0;
+  for (int round = 0; round < k / 2; ++round) {
+    int bi = -1, bj = -1;
+    double best = 0;
+    for (int i = 0; i < k; ++i)
+      for (int j = i + 1; j < k && !paired[i]; ++j) {
+        if (paired[j]) continue;
+        const double score = side[i].dot(side[j]) + (disagree(i, j) ? 2 : 0) +
+                             (part[corner_triangle(c[i])] != part[corner_triangle(c[j])] ? 4 : 0);
+        if (bi < 0 || score < best) {
+          best = score;
+          bi = i;
+          bj = j;
+        }
+      }
+    paired[bi] = paired[bj] = 1;
+    opposite[c[bi]] = c[bj];
+    opposite[c[bj]] = c[bi];
+    disagreeing += disagree(bi, bj);
+  }
+  return disagreeing;
+}
 
-bool build_corner_table(const Faces& faces, int vertex_count, CornerTable& table,
-                        int& inconsistent_edges, std::string& error) {
+// `positions` null: an edge of more than two faces fails the build; else its faces are paired by
+// pair_sheets and the edge counted in `cut_edges`.
+bool build_table(const Faces& faces, int vertex_count, const Positions* positions, CornerTable& table,
+                 int& inconsistent_edges, int* cut_edges, std::string& error) {
   const int nf = static_cast<int>(faces.rows());
   table.vertex.resize(3 * static_cast<size_t>(nf));
   table.opposite.assign(3 * static_cast<size_t>(nf), -1);
@@ -53,7 +96,7 @@ bool build_corner_table(const Faces& faces, int vertex_count, CornerTable& table
   group_corners_by_edge(table, vertex_count, start, corners);
   inconsistent_edges = 0;
   int nonmanifold_edges = 0;
-  std::vector<int> same_edge;
+  std::vector<std::pair<int, int>> crowded;  // edges of more than two faces: their corners' range
   for (int v = 0; v < vertex_count; ++v) {
     // Within one bucket, corners facing the same edge share the larger endpoint too.
     std::sort(corners.begin() + start[v], corners.begin() + start[v + 1], [&](int a, int b) {
@@ -74,17 +117,38 @@ bool build_corner_table(const Faces& faces, int vertex_count, CornerTable& table
         if (table.vertex[corner_next(c)] != table.vertex[corner_prev(d)]) ++inconsistent_edges;
       } else if (j - i > 2) {
         ++nonmanifold_edges;
+        crowded.emplace_back(i, j - i);
       }
       i = j;
     }
   }
-  if (nonmanifold_edges > 0) {
+  if (positions && !crowded.empty()) {
+    std::vector<int> part;
+    face_components(table, part);
+    for (const auto& [first, count] : crowded)
+      inconsistent_edges += pair_sheets(*positions, part, table.vertex, &corners[first], count, table.opposite);
+  }
+  if (cut_edges) *cut_edges = nonmanifold_edges;
+  if (nonmanifold_edges > 0 && !cut_edges) {
     error = std::to_string(nonmanifold_edges) +
             " non-manifold edges (shared by more than two faces); repair them first "
             "(Cleaning and Repairing > Repair non Manifold Edges)";
     return false;
   }
   return true;
+}
+
+}  // namespace
+
+bool build_corner_table(const Faces& faces, int vertex_count, CornerTable& table, int& inconsistent_edges,
+                        std::string& error) {
+  return build_table(faces, vertex_count, nullptr, table, inconsistent_edges, nullptr, error);
+}
+
+bool build_corner_table_cutting(const Faces& faces, const Positions& positions, CornerTable& table,
+                                int& inconsistent_edges, int& cut_edges, std::string& error) {
+  return build_table(faces, static_cast<int>(positions.rows()), &positions, table, inconsistent_edges, &cut_edges,
+                     error);
 }
 
 bool orient_faces_coherently(Faces& faces, const CornerTable& table, std::string& error) {

@@ -12,6 +12,7 @@
 namespace hht {
 
 using Faces = Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor>;
+using Positions = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 
 inline int corner_next(int c) { return c % 3 == 2 ? c - 2 : c + 1; }
 inline int corner_prev(int c) { return c % 3 == 0 ? c + 2 : c - 1; }
@@ -29,6 +30,13 @@ struct CornerTable {
 // orientations disagree are paired all the same; `inconsistent_edges` counts them.
 bool build_corner_table(const Faces& faces, int vertex_count, CornerTable& table,
                         int& inconsistent_edges, std::string& error);
+
+// The same, but an edge of more than two faces does not fail the build: its faces are paired two
+// by two, two of one part of the surface without such edges first, then two whose orientations
+// agree, then the two nearest to lying flat across it (a surface with a fin on it stays joined),
+// and a face left over is left unpaired, a border; `cut_edges` counts such edges.
+bool build_corner_table_cutting(const Faces& faces, const Positions& positions, CornerTable& table,
+                                int& inconsistent_edges, int& cut_edges, std::string& error);
 
 // Flips faces so that every pair of neighbours agrees on orientation, one connected
 // component at a time. Fails on a non-orientable component (a Moebius strip).

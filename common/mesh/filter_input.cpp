@@ -6,24 +6,32 @@ void prepare_filter_input(Positions& positions, Faces& faces, bool mend, InputMa
   report = FilterInputReport{};
   map = InputMap{};
   CornerTable table;
-  int inconsistent = 0;
+  int inconsistent = 0, cut = 0;
   std::string error;
-  // Edges of more than two faces: no step applies (the filter says so, or works without).
-  if (!build_corner_table(faces, static_cast<int>(positions.rows()), table, inconsistent, error)) return;
+  const auto build = [&] {
+    return build_corner_table_cutting(faces, positions, table, inconsistent, cut, error);
+  };
+  if (!build()) return;  // faces out of range or repeating a vertex: the filter says so
+  // Edges of more than two faces: without `mend` no step applies (the filter says so, or works
+  // without); with it, the faces the table left unpaired there come apart in the split.
+  if (cut > 0 && !mend) return;
+  report.cut_edges = cut;
   BorderWeld weld;
-  if (mend && weld_coincident_border_vertices(positions, faces, table, weld, report.not_merged_why)) {
+  if (mend && cut == 0 && weld_coincident_border_vertices(positions, faces, table, weld, report.not_merged_why)) {
     positions = std::move(weld.positions);
     faces = std::move(weld.faces);
     map.row_of = std::move(weld.welded_of);
     report.merged = weld.merged;
     report.dropped_faces = weld.dropped_faces;
-    if (!build_corner_table(faces, static_cast<int>(positions.rows()), table, inconsistent, error)) return;
+    if (!build()) return;
   }
   report.orientation = orient_as_most_faces(faces, table, inconsistent);
   if (!mend || !report.orientation.done) return;
   const int n = static_cast<int>(positions.rows());
-  if (report.orientation.flipped > 0 && !build_corner_table(faces, n, table, inconsistent, error)) return;
-  if (count_nonmanifold_vertices(table, n) == 0) return;
+  if (report.orientation.flipped > 0 && !build()) return;
+  if (cut == 0 && count_nonmanifold_vertices(table, n) == 0) return;
+  // The fans are walked across paired edges only, so the split also gives the faces left unpaired
+  // at an edge of more than two faces vertices of their own.
   VertexSplit split;
   report.split = split_nonmanifold_vertices(faces, table, n, split);
   positions.conservativeResize(n + report.split, 3);

@@ -1,7 +1,8 @@
 // The surface a filter works on, made whole from what MeshLab holds: border vertices at the same
 // position merged (border_weld.h: a triangle soup, a surface cut at seams), faces oriented against
 // their neighbours turned (coherent_orientation.h), then vertices where several fans of faces meet
-// split, one per fan (vertex_split.h). One corner table serves all three unless the merge or the
+// split, one per fan (vertex_split.h), edges of more than two faces cut first so that each side of
+// them gets vertices of its own (a fin on a surface, two sheets through one edge). One corner table serves all three unless the merge or the
 // orientation changes the faces (0.5 s at 3.3M faces, half of it the walk over the fans;
 // docs/quality.md items 42 and 43).
 #pragma once
@@ -29,11 +30,13 @@ struct FilterInputReport {
   int dropped_faces = 0;        // faces the merge left with no area
   std::string not_merged_why;   // border vertices on each other, left apart: why
   OrientationRepair orientation;  // done false with an empty why_not: edges of more than two faces, not checked
-  int split = 0;                // vertices added by splitting non-manifold ones
+  int cut_edges = 0;            // edges of more than two faces, each side given vertices of its own
+  int split = 0;                // vertices added by splitting non-manifold ones (and cut edges)
 };
 
 // Orients `positions` and `faces` in place and, with `mend`, merges the seams first and splits the
-// non-manifold vertices last; `map` says where each input vertex went.
+// non-manifold vertices and edges last (no merge where an edge has more than two faces; without
+// `mend` such faces are left as they are); `map` says where each input vertex went.
 void prepare_filter_input(Positions& positions, Faces& faces, bool mend, InputMap& map, FilterInputReport& report);
 
 // A filter's result (one row per row of its arrays) as one row per input vertex: each vertex gets

@@ -11,7 +11,6 @@
 
 namespace hht {
 
-using Positions = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 
 template <class MeshType>
 void mesh_to_arrays(const MeshType& m, Positions& positions, Faces& faces) {

@@ -141,6 +141,41 @@ ArrayMesh touching_spheres(int subdivisions) {
   return both;
 }
 
+ArrayMesh finned_sphere(int subdivisions, int fin_edges) {
+  const ArrayMesh ball = sphere(subdivisions);
+  const int n = ball.vertices();
+  std::vector<std::set<int>> neighbours(n);
+  for (Eigen::Index f = 0; f < ball.faces.rows(); ++f)
+    for (int k = 0; k < 3; ++k) neighbours[ball.faces(f, k)].insert(ball.faces(f, (k + 1) % 3));
+  // The path climbs one direction, so it never comes back to a vertex.
+  const Eigen::RowVector3d climb = Eigen::RowVector3d(1, 0.3, 0.1).normalized();
+  std::vector<int> path{0};
+  while (static_cast<int>(path.size()) <= fin_edges) {
+    int best = -1;
+    for (int j : neighbours[path.back()])
+      if (ball.positions.row(j).dot(climb) > ball.positions.row(path.back()).dot(climb) &&
+          (best < 0 || ball.positions.row(j).dot(climb) > ball.positions.row(best).dot(climb)))
+        best = j;
+    if (best < 0) break;
+    path.push_back(best);
+  }
+  const int steps = static_cast<int>(path.size()) - 1;
+  const double height = (ball.positions.row(path[1]) - ball.positions.row(path[0])).norm();
+  ArrayMesh out;
+  out.positions.resize(n + steps + 1, 3);
+  out.positions.topRows(n) = ball.positions;
+  for (int i = 0; i <= steps; ++i)
+    out.positions.row(n + i) = ball.positions.row(path[i]) * (1 + height / ball.positions.row(path[i]).norm());
+  out.faces.resize(ball.faces.rows() + 2 * steps, 3);
+  out.faces.topRows(ball.faces.rows()) = ball.faces;
+  for (int i = 0; i < steps; ++i) {
+    const Eigen::Index f = ball.faces.rows() + 2 * i;
+    out.faces.row(f) << path[i], path[i + 1], n + i + 1;
+    out.faces.row(f + 1) << path[i], n + i + 1, n + i;
+  }
+  return out;
+}
+
 ArrayMesh flip_random_edges(const ArrayMesh& m, int flips, unsigned seed) {
   ArrayMesh out = m;
   CornerTable t;

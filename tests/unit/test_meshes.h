@@ -25,6 +25,11 @@ ArrayMesh remove_faces(const ArrayMesh& m, int every);  // drop every `every`-th
 ArrayMesh disjoint_union(const ArrayMesh& a, const ArrayMesh& b);
 // Two spheres touching at vertex 0, which both share: a non-manifold vertex (two fans of faces).
 ArrayMesh touching_spheres(int subdivisions);
+// A sphere with a fin: a strip of triangles standing out of it along a path of `fin_edges` of its
+// edges (from vertex 0), each of them shared by three faces: non-manifold edges. The fin's faces
+// come after the sphere's, its vertices (`fin_edges` + 1, each above its path vertex) after the
+// sphere's too.
+ArrayMesh finned_sphere(int subdivisions, int fin_edges);
 ArrayMesh flip_random_edges(const ArrayMesh& m, int flips, unsigned seed);
 // Each triangle cut into four at its edges' midpoints: the same surface, meshed twice as finely.
 ArrayMesh midpoint_subdivision(const ArrayMesh& m);
