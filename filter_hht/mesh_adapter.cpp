@@ -50,17 +50,18 @@ bool read_mesh_to_filter(const CMeshO& m, hht::Positions& positions, hht::Faces&
   else if (!repair.done && !repair.why_not.empty())
     log(QString("Orientation: the faces could not be checked: %1").arg(QString::fromStdString(repair.why_not)));
   if (report.cut_edges > 0) {
-    log(QString("Non-manifold: %1 shared by more than two faces (a fin on the surface, sheets meeting along an edge): "
-                "the filter worked on each side of them apart, on copies of their vertices (%2 more), and gives each "
-                "vertex its copies' results averaged, so the mesh stays as connected as it was (Cleaning and Repairing "
-                "> Repair non Manifold Edges makes it manifold for good, by removing faces)")
+    log(QString("Non-manifold: %1 shared by more than two faces (a fin on the surface, sheets meeting along an edge, a "
+                "face given twice): the filter worked on each side of them apart, on copies of their vertices (%2 more), "
+                "and gives each vertex the result of its copy inside the surface, so the mesh stays as "
+                "connected as it was (Cleaning and Repairing > Repair non Manifold Edges makes it manifold for good, by "
+                "removing faces)")
             .arg(report.cut_edges == 1 ? QString("1 edge") : QString("%1 edges").arg(report.cut_edges))
             .arg(report.split));
   } else if (report.split > 0) {
     const int split_vertices = static_cast<int>(std::set<int>(map.copy_of.begin(), map.copy_of.end()).size());
     log(QString("Non-manifold: %1 where several fans of faces meet: the filter worked on one copy per fan (%2 more) "
-                "and gives each its copies' results averaged, so the mesh stays as connected as it was (Cleaning and "
-                "Repairing > Repair non Manifold Vertices by splitting splits them for good)")
+                "and gives each the result of the copy with the most area around it, so the mesh stays as connected "
+                "as it was (Cleaning and Repairing > Repair non Manifold Vertices by splitting splits them for good)")
             .arg(split_vertices == 1 ? QString("1 vertex") : QString("%1 vertices").arg(split_vertices))
             .arg(report.split));
   }

@@ -2,12 +2,14 @@
 """Edges of more than two faces through the shipped scripts (docs/quality.md item 44).
 
 Each mesh gets a fin: a strip of triangles one mean edge high standing along its vertex normals on
-a path of EDGES of its edges, each path edge then shared by three faces. The finned mesh and the
-mesh without the fin get the same noise on their shared vertices (isotropic, seed 7) and go through
-the staged meshlabserver; E_a / RMS / flipped faces are measured on the mesh's own faces, so the
-two columns differ only by what the fin does to the filtering of the surface it stands on.
+a path of EDGES of its edges, each path edge then shared by three faces; with --repeated instead
+every 50th face given twice (as some exports repeat faces: each edge of such a face then has three
+or four). The changed mesh and the mesh as it was get the same noise on their shared vertices
+(isotropic, seed 7) and go through the staged meshlabserver; E_a / RMS / flipped faces are measured
+on the mesh's own faces, so the two columns differ only by what the change does to the filtering of
+the surface.
 
-    xvfb-run -a /usr/bin/python3 scripts/evaluate_nonmanifold_edges.py [--edges 30] MESH.off...
+    xvfb-run -a /usr/bin/python3 scripts/evaluate_nonmanifold_edges.py [--edges 30 | --repeated] MESH.off...
 """
 
 import argparse
@@ -50,15 +52,21 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("meshes", nargs="+")
     parser.add_argument("--edges", type=int, default=30)
+    parser.add_argument("--repeated", action="store_true")
     parser.add_argument("--levels", default="10,20")
     args = parser.parse_args()
     work = tempfile.mkdtemp(prefix="hht_fin_")
-    print("| mesh, noise | path edges | script | noisy | without the fin | with the fin |")
+    change = "repeated faces" if args.repeated else "path edges"
+    what = "the faces repeated" if args.repeated else "the fin"
+    print("| mesh, noise | %s | script | noisy | without %s | with %s |" % (change, what, what))
     print("|---|---|---|---|---|---|")
     for path in args.meshes:
         name = os.path.basename(path)[:-4]
         v, faces = q.read_off(path)
-        fv, ff, steps = add_fin(v, faces, args.edges)
+        if args.repeated:
+            fv, ff, steps = v, np.vstack([faces, faces[::50]]), len(faces[::50])
+        else:
+            fv, ff, steps = add_fin(v, faces, args.edges)
         folded = q.folded_faces(v, faces)
         diagonal = float(np.linalg.norm(v.max(0) - v.min(0)))
         plain_clean = os.path.join(work, name + "_clean.ply")

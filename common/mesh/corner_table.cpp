@@ -26,8 +26,8 @@ void group_corners_by_edge(const CornerTable& t, int vertex_count, std::vector<i
 // first: two faces of one part of the surface without such edges (`part`: a surface with a fin on
 // it stays closed, the fin comes off), then faces whose orientations agree across the edge (a
 // coherent sheet's sides do), then the pair nearest to lying flat across the edge (their third
-// vertices most opposite seen along it). A face without a partner is left unpaired. Returns the
-// pairs whose orientations disagree.
+// vertices most opposite seen along it), then the faces that come first. A face without a partner
+// is left unpaired. Returns the pairs whose orientations disagree.
 int pair_sheets(const Positions& p, const std::vector<int>& part, const std::vector<int>& vertex, const int* c, int k,
                 std::vector<int>& opposite) {
   const int a = vertex[corner_next(c[0])], b = vertex[corner_prev(c[0])];
@@ -50,7 +50,9 @@ int pair_sheets(const Positions& p, const std::vector<int>& part, const std::vec
         if (paired[j]) continue;
         const double score = side[i].dot(side[j]) + (disagree(i, j) ? 2 : 0) +
                              (part[corner_triangle(c[i])] != part[corner_triangle(c[j])] ? 4 : 0);
-        if (bi < 0 || score < best) {
+        // A tie (a face given twice) goes to the faces that come first, the same at each of their edges.
+        const int last = std::max(c[i], c[j]);
+        if (bi < 0 || score < best || (score == best && last < std::max(c[bi], c[bj]))) {
           best = score;
           bi = i;
           bj = j;

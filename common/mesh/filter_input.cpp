@@ -1,5 +1,7 @@
 #include "mesh/filter_input.h"
 
+#include <numeric>
+
 namespace hht {
 
 void prepare_filter_input(Positions& positions, Faces& faces, bool mend, InputMap& map, FilterInputReport& report) {
@@ -36,6 +38,28 @@ void prepare_filter_input(Positions& positions, Faces& faces, bool mend, InputMa
   report.split = split_nonmanifold_vertices(faces, table, n, split);
   positions.conservativeResize(n + report.split, 3);
   for (int k = 0; k < report.split; ++k) positions.row(n + k) = positions.row(split.copy_of[k]);
+  // Each vertex takes the result of the copy inside a surface (a fin's or a repeated face's copy
+  // lies on a border) with the most face area around it.
+  const int rows = n + report.split;
+  std::vector<char> on_border(rows, 0);
+  if (build_corner_table(faces, rows, table, inconsistent, error))
+    for (int c = 0; c < table.corners(); ++c)
+      if (table.opposite[c] < 0) on_border[table.vertex[corner_next(c)]] = on_border[table.vertex[corner_prev(c)]] = 1;
+  Eigen::VectorXd around = Eigen::VectorXd::Zero(rows);
+  for (Eigen::Index f = 0; f < faces.rows(); ++f) {
+    const Eigen::RowVector3d a = positions.row(faces(f, 0)), b = positions.row(faces(f, 1)), c = positions.row(faces(f, 2));
+    const double area = (b - a).cross(c - a).norm();
+    for (int k = 0; k < 3; ++k) around[faces(f, k)] += area;
+  }
+  const auto better = [&](int a, int b) {
+    return on_border[a] != on_border[b] ? !on_border[a] : around[a] > around[b];
+  };
+  map.result_of.resize(n);
+  std::iota(map.result_of.begin(), map.result_of.end(), 0);
+  for (int k = 0; k < report.split; ++k) {
+    int& taken = map.result_of[split.copy_of[k]];
+    if (better(n + k, taken)) taken = n + k;
+  }
   map.copy_of = std::move(split.copy_of);
 }
 

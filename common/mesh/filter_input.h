@@ -17,10 +17,14 @@
 namespace hht {
 
 // Which row of the filter's arrays each input vertex became. `row_of` empty: row i is vertex i;
-// `copy_of`: the rows appended by the split, each the row it copies.
+// `copy_of`: the rows appended by the split, each the row it copies; `result_of` (with copies): for
+// each row before them, the row whose result it takes: itself or a copy, one inside a surface
+// before one on a border (the surface a fin or a repeated face stands on, not the fin or the face),
+// then the one with the most face area around it.
 struct InputMap {
   std::vector<int> row_of;
   std::vector<int> copy_of;
+  std::vector<int> result_of;
   bool identity() const { return row_of.empty() && copy_of.empty(); }
   int row(int vertex) const { return row_of.empty() ? vertex : row_of[vertex]; }
 };
@@ -40,18 +44,14 @@ struct FilterInputReport {
 void prepare_filter_input(Positions& positions, Faces& faces, bool mend, InputMap& map, FilterInputReport& report);
 
 // A filter's result (one row per row of its arrays) as one row per input vertex: each vertex gets
-// its row's, averaged with the row's split copies.
+// its row's, or that of one of the row's split copies (`result_of`).
 template <class Matrix>
 Matrix to_input_vertices(const Matrix& rows, const InputMap& map) {
   if (map.identity()) return rows;
   const Eigen::Index base = rows.rows() - static_cast<Eigen::Index>(map.copy_of.size());
   Matrix merged = rows.topRows(base);
-  Eigen::VectorXd count = Eigen::VectorXd::Ones(base);
-  for (size_t k = 0; k < map.copy_of.size(); ++k) {
-    merged.row(map.copy_of[k]) += rows.row(base + static_cast<Eigen::Index>(k));
-    count[map.copy_of[k]] += 1;
-  }
-  for (Eigen::Index r = 0; r < base; ++r) merged.row(r) /= count[r];
+  for (size_t r = 0; r < map.result_of.size(); ++r)
+    if (map.result_of[r] != static_cast<int>(r)) merged.row(static_cast<Eigen::Index>(r)) = rows.row(map.result_of[r]);
   if (map.row_of.empty()) return merged;
   Matrix out(static_cast<Eigen::Index>(map.row_of.size()), rows.cols());
   for (size_t i = 0; i < map.row_of.size(); ++i) out.row(static_cast<Eigen::Index>(i)) = merged.row(map.row_of[i]);

@@ -2,8 +2,8 @@
 // few vertices where two fans of faces meet (two cones touching at a tip, two boundary loops
 // through one vertex); the filters built on the Hamiltonian cycle or on guided normal filtering
 // need a manifold and refused such a mesh whole. Split, each fan gets a vertex of its own at the
-// same place; the filter's results for the copies are averaged back, so the mesh stays as
-// connected as it was (ours, docs/quality.md item 43).
+// same place; the vertex takes the result of one copy (InputMap::result_of in filter_input.h), so
+// the mesh stays as connected as it was (ours, docs/quality.md items 43 and 44).
 #pragma once
 
 #include "mesh/corner_table.h"

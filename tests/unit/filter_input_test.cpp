@@ -56,7 +56,8 @@ TEST(FilterInput, MakesASoupWithFacesAgainstTheirNeighboursOneOrientedSurface) {
 // strip with a border of its own, and the result is a manifold the strict table accepts, whichever
 // faces come first in the list, and under noise of 30% of the mean edge in five draws (the faces'
 // angles across the edges and their orientations alone, without the parts, pair the fin with the
-// sphere in the second). A value given to a path vertex and its copy comes back averaged.
+// sphere in the second). A path vertex takes the result of its row on the sphere's side, inside
+// the surface, not of the fin's, on its border (with noise the fin's row may have more area around it).
 TEST(FilterInput, CutsEdgesOfMoreThanTwoFacesIntoTheirSides) {
   const ArrayMesh clean = finned_sphere(3, 6);
   const int n = clean.vertices();
@@ -102,11 +103,13 @@ TEST(FilterInput, CutsEdgesOfMoreThanTwoFacesIntoTheirSides) {
     EXPECT_EQ(sphere_border, 0) << "the sphere is closed again";
     EXPECT_EQ(fin_border, 14);
 
-    Eigen::VectorXd rows = Eigen::VectorXd::Zero(n + 7);
-    rows.tail(7).setConstant(4);
+    Eigen::VectorXd rows = Eigen::VectorXd::Constant(n + 7, -1);  // -1: a row of the fin alone
+    for (Eigen::Index f = 0; f < g.rows(); ++f)
+      if (on_sphere[f])
+        for (int k = 0; k < 3; ++k) rows[g(f, k)] = 1;
     const Eigen::VectorXd back = to_input_vertices(rows, map);
     ASSERT_EQ(back.size(), n);
-    EXPECT_EQ(back.sum(), 7 * 2);
+    for (int v = 0; v < n; ++v) EXPECT_EQ(back[v], v < n - 7 ? 1 : -1) << "vertex " << v;
 
     // without mending the faces are left for the filter to refuse
     p = finned.positions;
@@ -115,6 +118,42 @@ TEST(FilterInput, CutsEdgesOfMoreThanTwoFacesIntoTheirSides) {
     EXPECT_TRUE(map.identity());
     EXPECT_TRUE(p == finned.positions && g == faces);
   }
+}
+
+// A sphere with every third face given twice (as some exports repeat faces; neighbouring faces among
+// them, so a repeated face's edges meet other repeated faces) and two reversed: the sphere keeps its
+// own faces and stays closed, each repeated face comes off on vertices of its own, and every vertex
+// takes its row on the sphere. Without the rule that ties go to the faces that come first, a face
+// and its repeat split the sphere's edges between them and leave it slit.
+TEST(FilterInput, TakesARepeatedFaceOffTheSurface) {
+  const ArrayMesh m = sphere(3);
+  const int nf = static_cast<int>(m.faces.rows()), n = m.vertices();
+  std::vector<int> repeated;
+  for (int f = 0; f < nf; f += 3) repeated.push_back(f);
+  Faces faces(nf + static_cast<int>(repeated.size()), 3);
+  faces.topRows(nf) = m.faces;
+  for (size_t k = 0; k < repeated.size(); ++k) faces.row(nf + static_cast<int>(k)) = m.faces.row(repeated[k]);
+  std::swap(faces(nf, 1), faces(nf, 2));
+  std::swap(faces(nf + 1, 1), faces(nf + 1, 2));
+  Positions p = m.positions;
+  Faces g = faces;
+  InputMap map;
+  FilterInputReport report;
+  prepare_filter_input(p, g, true, map, report);
+  EXPECT_GT(report.cut_edges, 0);
+  EXPECT_TRUE(g.topRows(nf) == m.faces) << "the sphere's own faces were moved to copies";
+  CornerTable table;
+  int inconsistent = -1;
+  std::string error;
+  ASSERT_TRUE(build_corner_table(g, static_cast<int>(p.rows()), table, inconsistent, error)) << error;
+  EXPECT_EQ(count_nonmanifold_vertices(table, static_cast<int>(p.rows())), 0);
+  int sphere_border = 0;
+  for (int c = 0; c < 3 * nf; ++c) sphere_border += table.opposite[c] < 0;
+  EXPECT_EQ(sphere_border, 0) << "the sphere is slit";
+  Eigen::VectorXd rows = Eigen::VectorXd::Constant(p.rows(), -1);
+  rows.head(n).setConstant(1);
+  const Eigen::VectorXd back = to_input_vertices(rows, map);
+  EXPECT_EQ(back.minCoeff(), 1) << "a vertex took its repeated face's row";
 }
 
 }  // namespace

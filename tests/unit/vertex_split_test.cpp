@@ -35,7 +35,8 @@ TEST(VertexSplit, GivesEachFanOfANonManifoldVertexItsOwnVertex) {
   EXPECT_GT(on_copy, 0);
   EXPECT_GT(on_zero, 0);
 
-  // Through the filters' preparation: the split reported, and values of the copies averaged back.
+  // Through the filters' preparation: the split reported, and the value of one of the two copies
+  // (the spheres are mirror images: as much area around each) brought back.
   Positions p = both.positions;
   Faces g = both.faces;
   InputMap map;
@@ -49,7 +50,7 @@ TEST(VertexSplit, GivesEachFanOfANonManifoldVertexItsOwnVertex) {
   rows[n] = 3;
   const Eigen::VectorXd back = to_input_vertices(rows, map);
   ASSERT_EQ(back.size(), n);
-  EXPECT_EQ(back[0], 2);
+  EXPECT_TRUE(back[0] == 1 || back[0] == 3) << back[0];
 }
 
 // A manifold mesh, holes included, has nothing to split.
