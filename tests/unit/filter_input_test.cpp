@@ -8,6 +8,20 @@
 namespace hht::test {
 namespace {
 
+// The filters' input made from `positions` and `faces`, with what the preparation says of it.
+struct Prepared {
+  Positions positions;
+  Faces faces;
+  InputMap map;
+  FilterInputReport report;
+};
+
+Prepared prepared(const Positions& positions, const Faces& faces, bool mend = true) {
+  Prepared out{positions, faces, {}, {}};
+  prepare_filter_input(out.positions, out.faces, mend, out.map, out.report);
+  return out;
+}
+
 // A soup of a sphere (every face with vertices of its own) with every other face reversed comes
 // out as the sphere: positions merged, faces over them oriented as the first face, each input
 // vertex mapped to its row; without merging only the orientation could be checked, and a soup has
@@ -82,11 +96,11 @@ TEST(FilterInput, CutsEdgesOfMoreThanTwoFacesIntoTheirSides) {
     ASSERT_FALSE(build_corner_table(faces, n, table, inconsistent, error));
     EXPECT_NE(error.find("6 non-manifold edges"), std::string::npos) << error;
 
-    Positions p = finned.positions;
-    Faces g = faces;
-    InputMap map;
-    FilterInputReport report;
-    prepare_filter_input(p, g, true, map, report);
+    const Prepared in = prepared(finned.positions, faces);
+    const Positions& p = in.positions;
+    const Faces& g = in.faces;
+    const InputMap& map = in.map;
+    const FilterInputReport& report = in.report;
     EXPECT_EQ(report.cut_edges, 6);
     EXPECT_EQ(report.split, 7);
     ASSERT_EQ(p.rows(), n + 7);
@@ -112,11 +126,9 @@ TEST(FilterInput, CutsEdgesOfMoreThanTwoFacesIntoTheirSides) {
     for (int v = 0; v < n; ++v) EXPECT_EQ(back[v], v < n - 7 ? 1 : -1) << "vertex " << v;
 
     // without mending the faces are left for the filter to refuse
-    p = finned.positions;
-    g = faces;
-    prepare_filter_input(p, g, false, map, report);
-    EXPECT_TRUE(map.identity());
-    EXPECT_TRUE(p == finned.positions && g == faces);
+    const Prepared as_is = prepared(finned.positions, faces, false);
+    EXPECT_TRUE(as_is.map.identity());
+    EXPECT_TRUE(as_is.positions == finned.positions && as_is.faces == faces);
   }
 }
 
@@ -135,25 +147,21 @@ TEST(FilterInput, TakesARepeatedFaceOffTheSurface) {
   for (size_t k = 0; k < repeated.size(); ++k) faces.row(nf + static_cast<int>(k)) = m.faces.row(repeated[k]);
   std::swap(faces(nf, 1), faces(nf, 2));
   std::swap(faces(nf + 1, 1), faces(nf + 1, 2));
-  Positions p = m.positions;
-  Faces g = faces;
-  InputMap map;
-  FilterInputReport report;
-  prepare_filter_input(p, g, true, map, report);
-  EXPECT_GT(report.cut_edges, 0);
-  EXPECT_TRUE(g.topRows(nf) == m.faces) << "the sphere's own faces were moved to copies";
+  const Prepared in = prepared(m.positions, faces);
+  const int rows = static_cast<int>(in.positions.rows());
+  EXPECT_GT(in.report.cut_edges, 0);
+  EXPECT_TRUE(in.faces.topRows(nf) == m.faces) << "the sphere's own faces were moved to copies";
   CornerTable table;
   int inconsistent = -1;
   std::string error;
-  ASSERT_TRUE(build_corner_table(g, static_cast<int>(p.rows()), table, inconsistent, error)) << error;
-  EXPECT_EQ(count_nonmanifold_vertices(table, static_cast<int>(p.rows())), 0);
+  ASSERT_TRUE(build_corner_table(in.faces, rows, table, inconsistent, error)) << error;
+  EXPECT_EQ(count_nonmanifold_vertices(table, rows), 0);
   int sphere_border = 0;
   for (int c = 0; c < 3 * nf; ++c) sphere_border += table.opposite[c] < 0;
   EXPECT_EQ(sphere_border, 0) << "the sphere is slit";
-  Eigen::VectorXd rows = Eigen::VectorXd::Constant(p.rows(), -1);
-  rows.head(n).setConstant(1);
-  const Eigen::VectorXd back = to_input_vertices(rows, map);
-  EXPECT_EQ(back.minCoeff(), 1) << "a vertex took its repeated face's row";
+  Eigen::VectorXd values = Eigen::VectorXd::Constant(rows, -1);
+  values.head(n).setConstant(1);
+  EXPECT_EQ(to_input_vertices(values, in.map).minCoeff(), 1) << "a vertex took its repeated face's row";
 }
 
 }  // namespace

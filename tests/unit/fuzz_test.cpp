@@ -1,5 +1,6 @@
 // Every entry point of the library on random broken meshes from a fixed seed: random points and
-// faces, heavily noisy surfaces, deleted faces, duplicated and collapsed vertices, faces repeating a vertex, scales from
+// faces, heavily noisy surfaces, deleted faces, duplicated and collapsed vertices, faces repeating a vertex, faces
+// given twice and fins (edges of more than two faces), scales from
 // 1e-20 to 1e20, NaN and infinite coordinates. Each call must return a finite result or refuse
 // with a message, and leave its input as it was (compared bit for bit, NaN included).
 //
@@ -128,11 +129,41 @@ FuzzMesh random_mesh(std::mt19937& rng) {
   return fm;
 }
 
+// Edges of more than two faces (docs/quality.md item 44): some faces given twice (half of them
+// reversed), or a fin face on one edge.
+void add_crowded_edges(FuzzMesh& fm, std::mt19937& rng) {
+  ArrayMesh& m = fm.mesh;
+  std::uniform_real_distribution<double> unit(0, 1);
+  if (m.faces.rows() == 0 || unit(rng) >= 0.4) return;
+  std::uniform_int_distribution<Eigen::Index> face(0, m.faces.rows() - 1);
+  const Eigen::Index f = face(rng);
+  if (unit(rng) < 0.5) {
+    const int repeats = std::uniform_int_distribution<int>(1, 5)(rng);
+    for (int k = 0; k < repeats; ++k) {
+      m.faces.conservativeResize(m.faces.rows() + 1, 3);
+      m.faces.row(m.faces.rows() - 1) = m.faces.row(k == 0 ? f : face(rng));
+      if (unit(rng) < 0.5) std::swap(m.faces(m.faces.rows() - 1, 1), m.faces(m.faces.rows() - 1, 2));
+    }
+    fm.how += ", faces given twice";
+  } else {
+    const int a = m.faces(f, 0), b = m.faces(f, 1), tip = m.vertices();
+    m.positions.conservativeResize(tip + 1, 3);
+    m.positions.row(tip) = m.positions.row(a) + m.positions.row(b) - m.positions.row(m.faces(f, 2));
+    m.faces.conservativeResize(m.faces.rows() + 1, 3);
+    m.faces.row(m.faces.rows() - 1) << a, b, tip;
+    fm.how += ", a fin";
+  }
+}
+
 const std::vector<FuzzMesh>& fuzz_meshes() {
   static const std::vector<FuzzMesh> meshes = [] {
     std::mt19937 rng(kSeed);
+    std::mt19937 crowded(kSeed + 1);  // a stream of its own: the meshes drawn from `rng` stay as they were
     std::vector<FuzzMesh> all;
-    for (int i = 0; i < kMeshes; ++i) all.push_back(random_mesh(rng));
+    for (int i = 0; i < kMeshes; ++i) {
+      all.push_back(random_mesh(rng));
+      add_crowded_edges(all.back(), crowded);
+    }
     return all;
   }();
   return meshes;
