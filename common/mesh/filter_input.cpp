@@ -17,9 +17,8 @@ void prepare_filter_input(Positions& positions, Faces& faces, bool mend, InputMa
   // Edges of more than two faces: without `mend` no step applies (the filter says so, or works
   // without); with it, the faces the table left unpaired there come apart in the split.
   if (cut > 0 && !mend) return;
-  report.cut_edges = cut;
   BorderWeld weld;
-  if (mend && cut == 0 && weld_coincident_border_vertices(positions, faces, table, weld, report.not_merged_why)) {
+  if (mend && weld_coincident_border_vertices(positions, faces, table, weld, report.not_merged_why)) {
     positions = std::move(weld.positions);
     faces = std::move(weld.faces);
     map.row_of = std::move(weld.welded_of);
@@ -27,6 +26,11 @@ void prepare_filter_input(Positions& positions, Faces& faces, bool mend, InputMa
     report.dropped_faces = weld.dropped_faces;
     if (!build()) return;
   }
+  // Seams on a mesh with such edges: the merge refuses them (it does not join faces into edges of
+  // more than two), and the parts filtered apart would open at the seams; the filter refuses the
+  // edges as it did before they were split.
+  if (cut > 0 && !report.not_merged_why.empty()) return;
+  report.cut_edges = cut;
   report.orientation = orient_as_most_faces(faces, table, inconsistent);
   if (!mend || !report.orientation.done) return;
   const int n = static_cast<int>(positions.rows());

@@ -192,5 +192,43 @@ TEST(FilterInput, SplitsABookOfManyPagesIntoAManifold) {
   }
 }
 
+// A sphere with a fin and a seam (a vertex far from the fin given a copy that half its faces use,
+// as a texture seam leaves it): the merge refuses to join faces into edges of more than two, and
+// the parts filtered apart would open at the seam, so the faces are left for the filter to refuse,
+// as they were before such edges were split. With the seam alone the merge closes it.
+TEST(FilterInput, LeavesAFinWithASeamToBeRefused) {
+  const ArrayMesh finned = finned_sphere(3, 6);
+  ArrayMesh seamed = finned;
+  const int v = 300, copy = seamed.vertices();  // on the far side of the sphere from vertex 0's fin
+  ASSERT_LT(seamed.positions.row(v).dot(seamed.positions.row(0)), 0);
+  seamed.positions.conservativeResize(copy + 1, 3);
+  seamed.positions.row(copy) = seamed.positions.row(v);
+  int moved = 0;
+  for (Eigen::Index f = 0; f < seamed.faces.rows() && moved < 3; ++f)
+    for (int k = 0; k < 3; ++k)
+      if (seamed.faces(f, k) == v && moved < 3) {
+        seamed.faces(f, k) = copy;
+        ++moved;
+      }
+  const Prepared in = prepared(seamed.positions, seamed.faces);
+  EXPECT_FALSE(in.report.not_merged_why.empty());
+  EXPECT_EQ(in.report.cut_edges, 0);
+  EXPECT_TRUE(in.map.identity());
+  EXPECT_TRUE(in.positions == seamed.positions && in.faces == seamed.faces);
+
+  ArrayMesh seam_only = sphere(3);
+  seam_only.positions.conservativeResize(seam_only.vertices() + 1, 3);
+  seam_only.positions.row(seam_only.vertices() - 1) = seam_only.positions.row(v);
+  Faces faces = seam_only.faces;
+  moved = 0;
+  for (Eigen::Index f = 0; f < faces.rows() && moved < 3; ++f)
+    for (int k = 0; k < 3; ++k)
+      if (faces(f, k) == v && moved < 3) {
+        faces(f, k) = seam_only.vertices() - 1;
+        ++moved;
+      }
+  EXPECT_EQ(prepared(seam_only.positions, faces).report.merged, 1);
+}
+
 }  // namespace
 }  // namespace hht::test
