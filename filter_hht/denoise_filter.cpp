@@ -184,11 +184,14 @@ bool apply(FilterRun& run) {
       }, run.error, input_map))
     return false;
   if (show == SelectFeatureVertices) {
-    size_t i = 0;
+    Eigen::VectorXd feature(static_cast<Eigen::Index>(report.type.size()));
+    for (size_t r = 0; r < report.type.size(); ++r)
+      feature[static_cast<Eigen::Index>(r)] = report.type[r] != hht::FeatureType::None;
+    const Eigen::VectorXd on_mesh = hht::to_input_vertices(feature, input_map);  // a split vertex: its result's copy
+    Eigen::Index i = 0;
     for (auto& v : model.cm.vert) {
       if (v.IsD()) continue;
-      const size_t row = static_cast<size_t>(input_map.row(static_cast<int>(i++)));
-      if (report.type[row] != hht::FeatureType::None) v.SetS(); else v.ClearS();
+      if (on_mesh[i++] > 0) v.SetS(); else v.ClearS();
     }
   } else if (show == FeatureLineLayer) {
     add_feature_layer(run.document, result, report.feature_lines, "Feature lines of " + model.label());

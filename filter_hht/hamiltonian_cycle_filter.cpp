@@ -76,13 +76,8 @@ bool apply(FilterRun& run) {
   Eigen::VectorXd order_value(positions.rows());
   for (Eigen::Index v = 0; v < order_value.size(); ++v) order_value[v] = cycle.position[v];
   model.updateDataMask(MeshModel::MM_VERTQUALITY | MeshModel::MM_VERTCOLOR);
-  // Each mesh vertex takes its row's place on the cycle (a split vertex its first fan's).
-  const Eigen::Index live = input_map.row_of.empty()
-                                ? positions.rows() - static_cast<Eigen::Index>(input_map.copy_of.size())
-                                : static_cast<Eigen::Index>(input_map.row_of.size());
-  Eigen::VectorXd on_mesh(live);
-  for (Eigen::Index i = 0; i < live; ++i) on_mesh[i] = order_value[input_map.row(static_cast<int>(i))];
-  hht::set_vertex_quality(model.cm, on_mesh);
+  // Each mesh vertex takes its row's place on the cycle (a split vertex one copy's, as any result).
+  hht::set_vertex_quality(model.cm, hht::to_input_vertices(order_value, input_map));
   vcg::tri::UpdateColor<CMeshO>::PerVertexQualityRamp(model.cm, 0.f, std::max(1.f, float(cycle.order.size()) - 1));
   for (auto& v : model.cm.vert)
     if (!v.IsD() && v.Q() < 0) v.C() = vcg::Color4b::Black;  // not on the cycle

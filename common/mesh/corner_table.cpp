@@ -49,8 +49,8 @@ int pair_sheets(const Positions& p, const std::vector<int>& part, const std::vec
     int bi = -1, bj = -1;
     double best = 0;
     for (int i = 0; i < k; ++i)
-      for (int j = i + 1; j < k && !paired[i]; ++j) {
-        if (paired[j]) continue;
+      for (int j = i + 1; j < k; ++j) {
+        if (paired[i] || paired[j]) continue;
         const double score = side[i].dot(side[j]) + (disagree(i, j) ? 2 : 0) +
                              (part[corner_triangle(c[i])] != part[corner_triangle(c[j])] ? 4 : 0);
         // A tie (a face given twice) goes to the faces that come first, the same at each of their edges.

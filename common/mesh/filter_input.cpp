@@ -4,6 +4,37 @@
 
 namespace hht {
 
+namespace {
+
+// For each of the first `n` rows, the row whose result it takes: itself or one of its copies (the
+// rows from n on, `copy_of`), one inside a surface before one on a border (a fin's or a repeated
+// face's copy lies on a border), then the one with the most face area around it. `table` is the
+// corner table before the split, whose borders the split keeps; `faces` are after it.
+std::vector<int> result_rows(const Positions& positions, const Faces& faces, const CornerTable& table,
+                             const std::vector<int>& copy_of, int n) {
+  const int rows = static_cast<int>(positions.rows());
+  std::vector<char> on_border(rows, 0);
+  for (int c = 0; c < table.corners(); ++c)
+    if (table.opposite[c] < 0)
+      on_border[faces(corner_triangle(c), corner_next(c) % 3)] = on_border[faces(corner_triangle(c), corner_prev(c) % 3)] = 1;
+  Eigen::VectorXd around = Eigen::VectorXd::Zero(rows);
+  for (Eigen::Index f = 0; f < faces.rows(); ++f) {
+    const Eigen::RowVector3d a = positions.row(faces(f, 0)), b = positions.row(faces(f, 1)), c = positions.row(faces(f, 2));
+    const double area = (b - a).cross(c - a).norm();
+    for (int k = 0; k < 3; ++k) around[faces(f, k)] += area;
+  }
+  const auto better = [&](int a, int b) { return on_border[a] != on_border[b] ? !on_border[a] : around[a] > around[b]; };
+  std::vector<int> result(n);
+  std::iota(result.begin(), result.end(), 0);
+  for (size_t k = 0; k < copy_of.size(); ++k) {
+    const int copy = n + static_cast<int>(k);
+    if (better(copy, result[copy_of[k]])) result[copy_of[k]] = copy;
+  }
+  return result;
+}
+
+}  // namespace
+
 void prepare_filter_input(Positions& positions, Faces& faces, bool mend, InputMap& map, FilterInputReport& report) {
   report = FilterInputReport{};
   map = InputMap{};
@@ -35,35 +66,14 @@ void prepare_filter_input(Positions& positions, Faces& faces, bool mend, InputMa
   if (!mend || !report.orientation.done) return;
   const int n = static_cast<int>(positions.rows());
   if (report.orientation.flipped > 0 && !build()) return;
-  if (cut == 0 && count_nonmanifold_vertices(table, n) == 0) return;
   // The fans are walked across paired edges only, so the split also gives the faces left unpaired
-  // at an edge of more than two faces vertices of their own.
+  // at an edge of more than two faces vertices of their own. A manifold has nothing to split.
   VertexSplit split;
   report.split = split_nonmanifold_vertices(faces, table, n, split);
+  if (report.split == 0) return;
   positions.conservativeResize(n + report.split, 3);
   for (int k = 0; k < report.split; ++k) positions.row(n + k) = positions.row(split.copy_of[k]);
-  // Each vertex takes the result of the copy inside a surface (a fin's or a repeated face's copy
-  // lies on a border) with the most face area around it.
-  const int rows = n + report.split;
-  std::vector<char> on_border(rows, 0);
-  if (build_corner_table(faces, rows, table, inconsistent, error))
-    for (int c = 0; c < table.corners(); ++c)
-      if (table.opposite[c] < 0) on_border[table.vertex[corner_next(c)]] = on_border[table.vertex[corner_prev(c)]] = 1;
-  Eigen::VectorXd around = Eigen::VectorXd::Zero(rows);
-  for (Eigen::Index f = 0; f < faces.rows(); ++f) {
-    const Eigen::RowVector3d a = positions.row(faces(f, 0)), b = positions.row(faces(f, 1)), c = positions.row(faces(f, 2));
-    const double area = (b - a).cross(c - a).norm();
-    for (int k = 0; k < 3; ++k) around[faces(f, k)] += area;
-  }
-  const auto better = [&](int a, int b) {
-    return on_border[a] != on_border[b] ? !on_border[a] : around[a] > around[b];
-  };
-  map.result_of.resize(n);
-  std::iota(map.result_of.begin(), map.result_of.end(), 0);
-  for (int k = 0; k < report.split; ++k) {
-    int& taken = map.result_of[split.copy_of[k]];
-    if (better(n + k, taken)) taken = n + k;
-  }
+  map.result_of = result_rows(positions, faces, table, split.copy_of, n);
   map.copy_of = std::move(split.copy_of);
 }
 

@@ -1,10 +1,11 @@
 // The surface a filter works on, made whole from what MeshLab holds: border vertices at the same
 // position merged (border_weld.h: a triangle soup, a surface cut at seams), faces oriented against
 // their neighbours turned (coherent_orientation.h), then vertices where several fans of faces meet
-// split, one per fan (vertex_split.h), edges of more than two faces cut first so that each side of
-// them gets vertices of its own (a fin on a surface, two sheets through one edge). One corner table serves all three unless the merge or the
+// split, one per fan (vertex_split.h), the faces of an edge of more than two paired sheet by sheet
+// first, so that the faces left over get vertices of their own (a fin on a surface, two sheets
+// through one edge, a face given twice). One corner table serves all three unless the merge or the
 // orientation changes the faces (0.5 s at 3.3M faces, half of it the walk over the fans;
-// docs/quality.md items 42 and 43).
+// docs/quality.md items 42-44).
 #pragma once
 
 #include "mesh/border_weld.h"
