@@ -2732,10 +2732,12 @@ int main(int argc, char** argv) {
     o.band = {0.1, 0.5, false};
     o.gain = 2;
     o.reconstruction.lambda = 0.1;
+    if (std::getenv("LAB_IDT")) o.laplacian_triangles = LaplacianTriangles::IntrinsicDelaunay;
     Positions out;
     SpectralMeshFilterReport r;
     spectral_mesh_filter(noisy, f, o, out, r, err);
     show("enhance.mlx", out);
+    std::printf("  vertices the flip guard put back: %d\n", r.restored_vertices);
     return 0;
   }
   if (argc > 3 && std::string(argv[3]) == "spec") {  // the Spectral Filter's smoothing at other settings (item 39)
@@ -2748,6 +2750,7 @@ int main(int argc, char** argv) {
         SpectralMeshFilterOptions o;  // gain 0 above 0.1: the paper's smoothing
         o.cycles = int(cycles);
         o.reconstruction.lambda = lambda;
+        if (std::getenv("LAB_IDT")) o.laplacian_triangles = LaplacianTriangles::IntrinsicDelaunay;
         Positions out;
         SpectralMeshFilterReport r;
         if (!spectral_mesh_filter(noisy, f, o, out, r, err)) { std::printf("%s\n", err.c_str()); continue; }

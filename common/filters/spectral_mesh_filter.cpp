@@ -22,7 +22,7 @@ bool spectral_mesh_filter(const Positions& positions, const Faces& faces, const 
 
   step(10, "Curvature signal");
   MeanCurvature curvature;
-  if (!mean_curvature(positions, faces, curvature, error)) return false;
+  if (!mean_curvature(positions, faces, curvature, error, options.laplacian_triangles)) return false;
   clock.done("signal");
 
   // One decomposition and filtered signal per cycle; the first cycle is the one reported.

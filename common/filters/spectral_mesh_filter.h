@@ -24,6 +24,9 @@ struct SpectralMeshFilterOptions {
   double gain = 0.0;
   int coarsest = 0;
   ReconstructionOptions reconstruction;
+  // The mesh's own triangles (the paper's); the intrinsic Delaunay ones were measured no better here
+  // (docs/quality.md item 45; the lab's `spec` and `e` modes with LAB_IDT=1).
+  LaplacianTriangles laplacian_triangles = LaplacianTriangles::Mesh;
 };
 
 struct SpectralMeshFilterReport {

@@ -273,9 +273,9 @@ bool surface_emd(const Positions& positions, const Faces& faces, const Eigen::Ve
   }
 
   // A = C M^-1 C with every diagonal entry stored (vertices of no face have an empty row).
-  const Positions cotangents = corner_cotangents(positions, faces);
-  const Sparse c = cotangent_matrix(faces, cotangents, n);
-  Eigen::VectorXd areas = mixed_voronoi_areas(positions, faces);
+  const CotangentLaplacian laplacian = extrinsic_cotangent_laplacian(positions, faces);  // as published
+  const Sparse c = cotangent_matrix(laplacian, n);
+  Eigen::VectorXd areas = laplacian.areas;
   const double floor_area = 1e-8 * std::max(areas.sum() / std::max(n, 1), std::numeric_limits<double>::min());
   for (Eigen::Index i = 0; i < areas.size(); ++i) areas[i] = 1.0 / std::max(areas[i], floor_area);
   Sparse diagonal(n, n);

@@ -56,33 +56,46 @@ Eigen::VectorXd mixed_voronoi_areas(const Positions& positions, const Faces& fac
   return area;
 }
 
-Eigen::SparseMatrix<double> cotangent_matrix(const Faces& faces, const Positions& cotangents, int vertex_count) {
-  std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(static_cast<size_t>(faces.rows()) * 12);
+CotangentLaplacian extrinsic_cotangent_laplacian(const Positions& positions, const Faces& faces) {
+  const Positions cot = corner_cotangents(positions, faces);
+  CotangentLaplacian out;
+  out.pairs.resize(3 * faces.rows(), 2);
+  out.weights.resize(3 * faces.rows());
   for (Eigen::Index f = 0; f < faces.rows(); ++f)
     for (int k = 0; k < 3; ++k) {
-      // the corner k faces the edge (j, l); half its cotangent couples j and l
-      const int j = faces(f, (k + 1) % 3), l = faces(f, (k + 2) % 3);
-      const double w = 0.5 * cotangents(f, k);
-      entries.emplace_back(j, l, -w);
-      entries.emplace_back(l, j, -w);
-      entries.emplace_back(j, j, w);
-      entries.emplace_back(l, l, w);
+      const Eigen::Index e = 3 * f + k;
+      out.pairs(e, 0) = faces(f, (k + 1) % 3);
+      out.pairs(e, 1) = faces(f, (k + 2) % 3);
+      out.weights[e] = 0.5 * cot(f, k);
     }
+  out.areas = mixed_voronoi_areas(positions, faces);
+  return out;
+}
+
+Eigen::SparseMatrix<double> cotangent_matrix(const CotangentLaplacian& laplacian, int vertex_count) {
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(static_cast<size_t>(laplacian.weights.size()) * 4);
+  for (Eigen::Index e = 0; e < laplacian.weights.size(); ++e) {
+    const int j = laplacian.pairs(e, 0), l = laplacian.pairs(e, 1);
+    const double w = laplacian.weights[e];
+    entries.emplace_back(j, l, -w);
+    entries.emplace_back(l, j, -w);
+    entries.emplace_back(j, j, w);
+    entries.emplace_back(l, l, w);
+  }
   Eigen::SparseMatrix<double> c(vertex_count, vertex_count);
   c.setFromTriplets(entries.begin(), entries.end());
   return c;
 }
 
-Positions cotangent_matrix_times(const Positions& positions, const Faces& faces, const Positions& cotangents) {
+Positions cotangent_matrix_times(const CotangentLaplacian& laplacian, const Positions& positions) {
   Positions out = Positions::Zero(positions.rows(), 3);
-  for (Eigen::Index f = 0; f < faces.rows(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const int j = faces(f, (k + 1) % 3), l = faces(f, (k + 2) % 3);
-      const Eigen::RowVector3d d = 0.5 * cotangents(f, k) * (positions.row(j) - positions.row(l));
-      out.row(j) += d;
-      out.row(l) -= d;
-    }
+  for (Eigen::Index e = 0; e < laplacian.weights.size(); ++e) {
+    const int j = laplacian.pairs(e, 0), l = laplacian.pairs(e, 1);
+    const Eigen::RowVector3d d = laplacian.weights[e] * (positions.row(j) - positions.row(l));
+    out.row(j) += d;
+    out.row(l) -= d;
+  }
   return out;
 }
 

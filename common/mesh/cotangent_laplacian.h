@@ -11,6 +11,15 @@
 
 namespace hht {
 
+// C and M of a triangulation, one entry per corner: the corner facing the edge (pairs(k, 0),
+// pairs(k, 1)) couples them with half its cotangent, weights[k]. The triangulation is the mesh's
+// own (extrinsic_cotangent_laplacian) or its intrinsic Delaunay one (intrinsic_delaunay.h).
+struct CotangentLaplacian {
+  Eigen::Matrix<int, Eigen::Dynamic, 2, Eigen::RowMajor> pairs;
+  Eigen::VectorXd weights;
+  Eigen::VectorXd areas;  // the diagonal of M; vertices of no face get 0
+};
+
 // Cotangent of the angle at each corner (row f, column k: the corner of faces(f, k)).
 // Zero-area faces get bounded cotangents instead of infinities.
 Positions corner_cotangents(const Positions& positions, const Faces& faces);
@@ -19,10 +28,13 @@ Positions corner_cotangents(const Positions& positions, const Faces& faces);
 // area at an obtuse corner and a quarter at the others. Vertices of no face get 0.
 Eigen::VectorXd mixed_voronoi_areas(const Positions& positions, const Faces& faces);
 
+// C and M over the mesh's own triangles.
+CotangentLaplacian extrinsic_cotangent_laplacian(const Positions& positions, const Faces& faces);
+
 // C, assembled (n x n).
-Eigen::SparseMatrix<double> cotangent_matrix(const Faces& faces, const Positions& cotangents, int vertex_count);
+Eigen::SparseMatrix<double> cotangent_matrix(const CotangentLaplacian& laplacian, int vertex_count);
 
 // C * positions without assembling C.
-Positions cotangent_matrix_times(const Positions& positions, const Faces& faces, const Positions& cotangents);
+Positions cotangent_matrix_times(const CotangentLaplacian& laplacian, const Positions& positions);
 
 }  // namespace hht

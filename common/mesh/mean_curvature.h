@@ -5,7 +5,7 @@
 // positions whose L V has this normal component, so the two share one definition.
 #pragma once
 
-#include "mesh/mesh_arrays.h"
+#include "mesh/intrinsic_delaunay.h"
 
 #include <string>
 
@@ -16,9 +16,12 @@ struct MeanCurvature {
   Positions laplacian;     // L V, per vertex (the mean-curvature normal 2H n on a smooth surface)
   Positions normals;       // n
   Eigen::VectorXd areas;   // mixed Voronoi areas (the diagonal of M)
+  LaplacianTriangles triangles = LaplacianTriangles::Mesh;  // L's (the reconstruction takes the same)
+  IntrinsicDelaunayReport delaunay;
 };
 
 // Fails on non-finite coordinates. Vertices of no face, or with zero area, get G = 0.
-bool mean_curvature(const Positions& positions, const Faces& faces, MeanCurvature& out, std::string& error);
+bool mean_curvature(const Positions& positions, const Faces& faces, MeanCurvature& out, std::string& error,
+                    LaplacianTriangles triangles = LaplacianTriangles::Mesh);
 
 }  // namespace hht

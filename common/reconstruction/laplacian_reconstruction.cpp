@@ -1,6 +1,6 @@
 #include "reconstruction/laplacian_reconstruction.h"
 
-#include "mesh/cotangent_laplacian.h"
+#include "mesh/intrinsic_delaunay.h"
 #include "evaluation/gaussian_noise.h"
 #include "mesh/mesh_checks.h"
 
@@ -55,8 +55,8 @@ bool reconstruct_positions(const Positions& positions, const Faces& faces, const
   }
   target *= scale;
 
-  const Positions cotangents = corner_cotangents(v, faces);
-  const Sparse c = cotangent_matrix(faces, cotangents, static_cast<int>(n));
+  // The signal's L (cotangents do not scale).
+  const Sparse c = cotangent_matrix(cotangent_laplacian(positions, faces, curvature.triangles), static_cast<int>(n));
   // Areas in scaled units, floored so that vertices of no or degenerate faces stay solvable.
   Eigen::VectorXd area = curvature.areas / (scale * scale);
   const double floor = 1e-8 * std::max(area.mean(), 1e-300);
@@ -139,7 +139,7 @@ bool reconstruct_positions(const Positions& positions, const Faces& faces, const
               " of the diagonal after " + std::to_string(it) + " iterations";
       // The usual cause: needles, whose cotangent weights dwarf every other and leave the system
       // near singular. A user can remove them; say so.
-      const Eigen::Index needles = (cotangents.array() > 1 / std::tan(kNeedleAngleDegrees * M_PI / 180)).rowwise().any().count();
+      const Eigen::Index needles = (corner_cotangents(v, faces).array() > 1 / std::tan(kNeedleAngleDegrees * M_PI / 180)).rowwise().any().count();
       if (needles > 0) {
         std::ostringstream hint;
         hint << "; the mesh has " << needles << " degenerate faces (an angle under " << kNeedleAngleDegrees

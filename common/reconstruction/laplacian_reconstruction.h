@@ -1,5 +1,5 @@
 // Positions rebuilt from a modified curvature signal (the paper's eq. 9-11):
-//   min ||L V~ - T||^2 + lambda^2 ||V~ - V||^2,   L = M^-1 C (cotangent_laplacian.h),
+//   min ||L V~ - T||^2 + lambda^2 ||V~ - V||^2,   L = M^-1 C, the curvature signal's (mean_curvature.h),
 // with T the target Laplacian. The paper's literal target is T_i = G~_i n_i; but L V has a
 // tangential part on any irregular mesh, so that target moves vertices even when G~ == G.
 // KeepTangential uses T_i = (L V)_i + (G~_i - G_i) n_i: only the normal component changes, and

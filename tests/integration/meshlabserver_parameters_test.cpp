@@ -150,7 +150,7 @@ TEST(MeshlabserverParameters, CurvatureColourRampClipsTheRequestedPercentile) {
   const Input in = read_input("fandisk");
   MeanCurvature h;
   std::string error;
-  ASSERT_TRUE(mean_curvature(in.positions, in.faces, h, error));
+  ASSERT_TRUE(mean_curvature(in.positions, in.faces, h, error, LaplacianTriangles::IntrinsicDelaunay));  // the script's
   for (int percentile : {2, 20}) {
     TriMesh m;
     load(run_resource(data_mesh("fandisk"), "curvature_signal.mlx", {{"rampPercentile", std::to_string(percentile)}},

@@ -63,25 +63,40 @@ TEST(Meshlabserver, HamiltonianCycleOnFandisk) {
   EXPECT_NE(run.log.find("on the cycle"), std::string::npos);
 }
 
+// The script's default takes L over the intrinsic Delaunay triangles; `intrinsicDelaunay` false over
+// Fandisk's own (746 of its edges are not Delaunay, so the two differ).
 TEST(Meshlabserver, CurvatureSignalMatchesTheLibrary) {
-  const ServerRun run = run_meshlabserver(data_mesh("fandisk"), resource("curvature_signal.mlx"), "curvature_fandisk");
-  TriMesh m;
-  load_output(run, m);
   TriMesh input;
   ASSERT_EQ(vcg::tri::io::ImporterOFF<TriMesh>::Open(input, data_mesh("fandisk").c_str()), 0);
   Positions positions;
   Faces faces;
   mesh_to_arrays(input, positions, faces);
-  MeanCurvature expected;
-  std::string error;
-  ASSERT_TRUE(mean_curvature(positions, faces, expected, error));
-  ASSERT_EQ(m.vn, expected.signal.size());
-  // MeshLab runs on floats: compare relative to the signal's scale
-  const double scale = expected.signal.cwiseAbs().maxCoeff();
-  for (int v = 0; v < m.vn; ++v) ASSERT_NEAR(m.vert[v].Q(), expected.signal[v], 1e-3 * scale) << v;
-  std::set<unsigned> colours;
-  for (const auto& v : m.vert) colours.insert(*reinterpret_cast<const unsigned*>(&v.C()[0]));
-  EXPECT_GT(colours.size(), 100u) << "the colour ramp should show the signal";
+  for (const bool intrinsic : {true, false}) {
+    const ServerRun run =
+        intrinsic ? run_meshlabserver(data_mesh("fandisk"), resource("curvature_signal.mlx"), "curvature_fandisk")
+                  : run_meshlabserver(data_mesh("fandisk"),
+                                      chain_scripts("curvature_own", {"curvature_signal.mlx"}, {{"intrinsicDelaunay", "false"}}),
+                                      "curvature_fandisk_own");
+    TriMesh m;
+    load_output(run, m);
+    MeanCurvature expected, other;
+    std::string error;
+    const auto triangles = intrinsic ? LaplacianTriangles::IntrinsicDelaunay : LaplacianTriangles::Mesh;
+    ASSERT_TRUE(mean_curvature(positions, faces, expected, error, triangles));
+    ASSERT_TRUE(mean_curvature(positions, faces, other, error,
+                               intrinsic ? LaplacianTriangles::Mesh : LaplacianTriangles::IntrinsicDelaunay));
+    ASSERT_EQ(m.vn, expected.signal.size());
+    // MeshLab runs on floats: compare relative to the signal's scale
+    const double scale = expected.signal.cwiseAbs().maxCoeff();
+    for (int v = 0; v < m.vn; ++v) ASSERT_NEAR(m.vert[v].Q(), expected.signal[v], 1e-3 * scale) << v << " " << intrinsic;
+    EXPECT_GT((other.signal - expected.signal).cwiseAbs().maxCoeff(), 0.05 * scale) << "the two must differ";
+    EXPECT_NE(run.log.find(intrinsic ? "Laplacian over the intrinsic Delaunay triangulation: " : "Curvature signal"),
+              std::string::npos)
+        << run.log;
+    std::set<unsigned> colours;
+    for (const auto& v : m.vert) colours.insert(*reinterpret_cast<const unsigned*>(&v.C()[0]));
+    EXPECT_GT(colours.size(), 100u) << "the colour ramp should show the signal";
+  }
 }
 
 void write_off(const std::string& path, const std::string& body) { std::ofstream(path) << body; }

@@ -211,6 +211,13 @@ std::vector<Case> entry_points() {
          const bool ok = mean_curvature(p, f, c, e);
          return refused_or(ok, e, {c.signal, c.laplacian, c.normals, c.areas});
        }},
+      {"MeanCurvatureIntrinsicDelaunay", false,
+       [](const Positions& p, const Faces& f) {
+         MeanCurvature c;
+         std::string e;
+         const bool ok = mean_curvature(p, f, c, e, LaplacianTriangles::IntrinsicDelaunay);
+         return refused_or(ok, e, {c.signal, c.laplacian, c.normals, c.areas});
+       }},
       {"HamiltonianCycle", false,
        [](const Positions& p, const Faces& f) {
          HamiltonianCycle cycle;
@@ -434,7 +441,7 @@ std::vector<Case> entry_points_moving_vertices() {
   std::vector<Case> movers;
   for (const Case& c : entry_points()) {
     const std::string name = c.name;
-    if (name != "MeanCurvature" && name != "HamiltonianCycle" && name != "HilbertSpectra" && name != "NoiseEstimate" &&
+    if (name != "MeanCurvature" && name != "MeanCurvatureIntrinsicDelaunay" && name != "HamiltonianCycle" && name != "HilbertSpectra" && name != "NoiseEstimate" &&
         name != "SharpFeatures" && name != "SurfaceEmd" && name != "CompareMetrics")
       movers.push_back(c);
   }

@@ -104,9 +104,9 @@ TEST(SurfaceEmd, EnvelopesAreTheConstrainedBiharmonicFields) {
   ASSERT_EQ(r.sifts, std::vector<int>{1});
   EXPECT_EQ(r.report.factorizations, 2);
 
-  const Eigen::MatrixXd c =
-      Eigen::MatrixXd(hht::cotangent_matrix(sphere.faces, hht::corner_cotangents(sphere.positions, sphere.faces), n));
-  const Eigen::VectorXd areas = hht::mixed_voronoi_areas(sphere.positions, sphere.faces);
+  const hht::CotangentLaplacian laplacian = hht::extrinsic_cotangent_laplacian(sphere.positions, sphere.faces);
+  const Eigen::MatrixXd c = Eigen::MatrixXd(hht::cotangent_matrix(laplacian, n));
+  const Eigen::VectorXd& areas = laplacian.areas;
   const Eigen::MatrixXd a = c * areas.cwiseInverse().asDiagonal() * c;
   std::vector<int> offset, neighbours;
   hht::one_ring_adjacency(sphere.faces, n, offset, neighbours);

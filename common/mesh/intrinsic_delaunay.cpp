@@ -1,0 +1,170 @@
+#include "mesh/intrinsic_delaunay.h"
+
+#include "mesh/corner_table.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace hht {
+
+namespace {
+
+// Area from the side lengths (Heron's formula in Kahan's stable order); 0 for an impossible triangle.
+double triangle_area(double a, double b, double c) {
+  if (a < b) std::swap(a, b);
+  if (b < c) std::swap(b, c);
+  if (a < b) std::swap(a, b);
+  const double q = (a + (b + c)) * (c - (a - b)) * (c + (a - b)) * (a + (b - c));
+  return q > 0 ? 0.25 * std::sqrt(q) : 0.0;
+}
+
+// The intrinsic triangulation: a corner table whose corner c faces an edge of length length[c].
+struct Triangulation {
+  CornerTable table;
+  std::vector<double> length;
+
+  // Cotangent of corner c's angle, bounded like corner_cotangents() on a face of no area.
+  double cotangent(int c) const {
+    const double a = length[c], b = length[corner_next(c)], d = length[corner_prev(c)];
+    const double area = triangle_area(a, b, d);
+    return (b * b + d * d - a * a) / std::max({4 * area, 2e-8 * b * d, 1e-300});
+  }
+
+  bool is_delaunay(int c) const {
+    const int o = table.opposite[c];
+    return o < 0 || cotangent(c) + cotangent(o) >= -1e-12;
+  }
+
+  // Replaces the edge facing c (and its opposite corner o) by the other diagonal of their two
+  // triangles, laid out flat. Refuses where the layout is not a strictly convex quad or the two
+  // triangles touch each other at another edge (a configuration only folded triangulations have).
+  bool flip(int c) {
+    std::vector<int>& v = table.vertex;
+    std::vector<int>& opp = table.opposite;
+    const int o = opp[c];
+    const int n1 = corner_next(c), p1 = corner_prev(c), n2 = corner_next(o), p2 = corner_prev(o);
+    const int t1 = corner_triangle(c), t2 = corner_triangle(o);
+    if (t1 == t2 || v[n2] != v[p1] || v[p2] != v[n1]) return false;
+    for (int x : {n1, p1, n2, p2})
+      if (opp[x] >= 0 && (corner_triangle(opp[x]) == t1 || corner_triangle(opp[x]) == t2)) return false;
+    // Corner c's vertex above the edge A = v[n1] -> B = v[p1], o's below it.
+    const double l = length[c];
+    if (!(l > 0)) return false;
+    const double ca = length[p1], cb = length[n1], oa = length[n2], ob = length[p2];
+    const double x1 = (l * l + ca * ca - cb * cb) / (2 * l), y1 = std::sqrt(std::max(0.0, ca * ca - x1 * x1));
+    const double x2 = (l * l + oa * oa - ob * ob) / (2 * l), y2 = -std::sqrt(std::max(0.0, oa * oa - x2 * x2));
+    if (!(y1 - y2 > 0)) return false;
+    const double crossing = x1 + (x2 - x1) * y1 / (y1 - y2);
+    if (!(crossing > 0 && crossing < l)) return false;
+    const double diagonal = std::hypot(x1 - x2, y1 - y2);
+
+    const int outer1 = opp[n1], outer2 = opp[n2];  // across (B, c's vertex) and (A, o's vertex)
+    v[p1] = v[o];
+    v[p2] = v[c];
+    opp[c] = outer2;
+    opp[o] = outer1;
+    if (outer2 >= 0) opp[outer2] = c;
+    if (outer1 >= 0) opp[outer1] = o;
+    opp[n1] = n2;
+    opp[n2] = n1;
+    length[c] = oa;
+    length[o] = cb;
+    length[n1] = length[n2] = diagonal;
+    return true;
+  }
+};
+
+}  // namespace
+
+CotangentLaplacian intrinsic_delaunay_laplacian(const Positions& positions, const Faces& faces,
+                                                IntrinsicDelaunayReport* report) {
+  IntrinsicDelaunayReport local;
+  IntrinsicDelaunayReport& r = report != nullptr ? *report : local;
+  r = IntrinsicDelaunayReport{};
+  const int n = static_cast<int>(positions.rows());
+
+  Triangulation t;
+  int inconsistent = 0;
+  std::string error;
+  if (!build_corner_table(faces, n, t.table, inconsistent, error)) return extrinsic_cotangent_laplacian(positions, faces);
+  if (inconsistent > 0) {  // C and M do not depend on the faces' orientation; the flips need one
+    Faces oriented = faces;
+    if (!orient_faces_coherently(oriented, t.table, error) ||
+        !build_corner_table(oriented, n, t.table, inconsistent, error) || inconsistent > 0)
+      return extrinsic_cotangent_laplacian(positions, faces);
+  }
+
+  const int corners = t.table.corners();
+  t.length.resize(corners);
+  double sum = 0;
+  for (int c = 0; c < corners; ++c) {
+    t.length[c] = (positions.row(t.table.vertex[corner_next(c)]) - positions.row(t.table.vertex[corner_prev(c)])).norm();
+    sum += t.length[c];
+  }
+  const double mean = corners > 0 ? sum / corners : 0.0;
+  if (!(mean > 0) || !std::isfinite(mean)) return extrinsic_cotangent_laplacian(positions, faces);
+  r.intrinsic = true;
+
+  double delta = 0;
+  for (int c = 0; c < corners; ++c)
+    delta = std::max(delta, kMollifyMargin * mean - (t.length[corner_next(c)] + t.length[corner_prev(c)] - t.length[c]));
+  if (delta > 0)
+    for (double& l : t.length) l += delta;
+  r.mollified = delta / mean;
+
+  std::vector<int> stack;
+  stack.reserve(corners / 2);
+  for (int c = 0; c < corners; ++c)
+    if (t.table.opposite[c] > c) stack.push_back(c);
+  // Flipping ends in exact arithmetic; the bound only stops a loop of rounding.
+  const long long max_flips = 20LL * corners + 100;
+  while (!stack.empty() && r.flips < max_flips) {
+    const int c = stack.back();
+    stack.pop_back();
+    const int o = t.table.opposite[c];
+    if (t.is_delaunay(c) || !t.flip(c)) continue;
+    ++r.flips;
+    // The quad's four sides may no longer be Delaunay.
+    for (int x : {c, corner_prev(c), o, corner_prev(o)})
+      if (t.table.opposite[x] >= 0) stack.push_back(x);
+  }
+
+  CotangentLaplacian out;
+  out.pairs.resize(corners, 2);
+  out.weights.resize(corners);
+  out.areas = Eigen::VectorXd::Zero(n);
+  for (int f = 0; f < corners / 3; ++f) {
+    double cot[3], len[3];
+    for (int k = 0; k < 3; ++k) {
+      const int c = 3 * f + k;
+      cot[k] = t.cotangent(c);
+      len[k] = t.length[c];
+      out.pairs(c, 0) = t.table.vertex[corner_next(c)];
+      out.pairs(c, 1) = t.table.vertex[corner_prev(c)];
+      out.weights[c] = 0.5 * cot[k];
+    }
+    const double area = triangle_area(len[0], len[1], len[2]);
+    if (!(area > 0)) continue;
+    int obtuse = -1;
+    for (int k = 0; k < 3; ++k)
+      if (cot[k] < 0) obtuse = k;
+    for (int k = 0; k < 3; ++k) {
+      const int j = (k + 1) % 3, l = (k + 2) % 3;
+      // Voronoi region of corner k in a non-obtuse triangle: (|e_kj|^2 cot l + |e_kl|^2 cot j) / 8
+      out.areas[t.table.vertex[3 * f + k]] +=
+          obtuse < 0 ? (len[l] * len[l] * cot[l] + len[j] * len[j] * cot[j]) / 8.0 : area * (k == obtuse ? 0.5 : 0.25);
+    }
+  }
+  return out;
+}
+
+CotangentLaplacian cotangent_laplacian(const Positions& positions, const Faces& faces, LaplacianTriangles triangles,
+                                       IntrinsicDelaunayReport* report) {
+  if (report != nullptr) *report = IntrinsicDelaunayReport{};
+  return triangles == LaplacianTriangles::IntrinsicDelaunay ? intrinsic_delaunay_laplacian(positions, faces, report)
+                                                            : extrinsic_cotangent_laplacian(positions, faces);
+}
+
+}  // namespace hht
