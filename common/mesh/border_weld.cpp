@@ -7,18 +7,33 @@ namespace hht {
 
 namespace {
 
-// Vertices whose faces, coherently oriented, form more than one fan; kMoreThanTwoFaces or
-// kNoOrientation when the faces have an edge of more than two faces or no coherent orientation.
-constexpr int kMoreThanTwoFaces = -1, kNoOrientation = -2;
-int nonmanifold_vertices(const Faces& faces, int vertex_count) {
+// Vertices whose faces, coherently oriented, form more than one fan, not counting the vertices of
+// edges of more than two faces (the table pairs such an edge's faces, and the faces left over come
+// apart at those vertices anyway; docs/quality.md item 44); kNoOrientation when the faces have no
+// coherent orientation.
+constexpr int kNoOrientation = -1;
+int nonmanifold_vertices(const Positions& positions, const Faces& faces) {
+  const int n = static_cast<int>(positions.rows());
   CornerTable table;
-  int inconsistent = 0;
+  int inconsistent = 0, cut = 0;
   std::string error;
-  if (!build_corner_table(faces, vertex_count, table, inconsistent, error)) return kMoreThanTwoFaces;
+  if (!build_corner_table_cutting(faces, positions, table, inconsistent, cut, error)) return 0;
   Faces oriented = faces;
   if (!orient_faces_coherently(oriented, table, error)) return kNoOrientation;
-  build_corner_table(oriented, vertex_count, table, inconsistent, error);
-  return count_nonmanifold_vertices(table, vertex_count);
+  build_corner_table_cutting(oriented, positions, table, inconsistent, cut, error);
+  std::vector<char> nonmanifold;
+  count_nonmanifold_vertices(table, n, &nonmanifold);
+  if (cut > 0) {
+    std::vector<std::pair<int, int>> edges;
+    edges.reserve(3 * faces.rows());
+    for (Eigen::Index f = 0; f < faces.rows(); ++f)
+      for (int k = 0; k < 3; ++k)
+        edges.emplace_back(std::minmax(faces(f, k), faces(f, (k + 1) % 3)));
+    std::sort(edges.begin(), edges.end());
+    for (size_t i = 0; i + 2 < edges.size(); ++i)
+      if (edges[i] == edges[i + 2]) nonmanifold[edges[i].first] = nonmanifold[edges[i].second] = 0;
+  }
+  return static_cast<int>(std::count(nonmanifold.begin(), nonmanifold.end(), 1));
 }
 
 }  // namespace
@@ -28,9 +43,9 @@ bool weld_coincident_border_vertices(const Positions& positions, const Faces& fa
   weld = BorderWeld{};
   why_not.clear();
   CornerTable table;
-  int inconsistent = 0;
+  int inconsistent = 0, cut = 0;
   std::string error;
-  if (!build_corner_table(faces, static_cast<int>(positions.rows()), table, inconsistent, error))
+  if (!build_corner_table_cutting(faces, positions, table, inconsistent, cut, error))
     return false;  // the filter says what is wrong
   return weld_coincident_border_vertices(positions, faces, table, weld, why_not);
 }
@@ -80,22 +95,19 @@ bool weld_coincident_border_vertices(const Positions& positions, const Faces& fa
     welded_faces.row(kept++) << a, b, c;
   }
   welded_faces.conservativeResize(kept, 3);
-  const int after = nonmanifold_vertices(welded_faces, rows);
-  if (after == kMoreThanTwoFaces) {
-    why_not = "merging them would leave edges of more than two faces";
-    return false;
-  }
+  Positions welded_positions(rows, 3);
+  for (int i = 0; i < n; ++i) welded_positions.row(welded_of[i]) = positions.row(i);
+  const int after = nonmanifold_vertices(welded_positions, welded_faces);
   if (after == kNoOrientation) {
     why_not = "merged, the surface would have no coherent orientation";
     return false;
   }
   // An input without a coherent orientation counts as having none: merging may mend it.
-  if (after > std::max(0, nonmanifold_vertices(faces, n))) {
+  if (after > std::max(0, nonmanifold_vertices(positions, faces))) {
     why_not = "merging them would join parts at a single vertex";
     return false;
   }
-  weld.positions.resize(rows, 3);
-  for (int i = 0; i < n; ++i) weld.positions.row(welded_of[i]) = positions.row(i);
+  weld.positions = std::move(welded_positions);
   weld.faces = std::move(welded_faces);
   weld.welded_of = std::move(welded_of);
   weld.merged = merged;

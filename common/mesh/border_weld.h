@@ -24,13 +24,15 @@ struct BorderWeld {
   int dropped_faces = 0;
 };
 
-// Merges the border vertices (on an edge of one face) at identical positions. False, with `weld`
-// empty, when none coincide or the input has an edge of more than two faces (`why_not` empty),
-// and when merging would leave such an edge, no coherent orientation, or parts joined at a vertex
-// only (more non-manifold vertices than the input has; `why_not` says which).
+// Merges the border vertices (on an edge of one face, of build_corner_table_cutting's table: an
+// edge of more than two faces leaves the faces it cannot pair on a border) at identical positions.
+// False, with `weld` empty, when none coincide (`why_not` empty), and when merging would leave no
+// coherent orientation or parts joined at a vertex only (more non-manifold vertices than the input
+// has, the vertices of edges of more than two faces not counted; `why_not` says which). Faces merged
+// into an edge of more than two faces (a soup of a surface with a fin) are left for the table to pair.
 bool weld_coincident_border_vertices(const Positions& positions, const Faces& faces, BorderWeld& weld,
                                      std::string& why_not);
-// The same with `faces`' corner table already built (build_corner_table).
+// The same with `faces`' corner table already built (build_corner_table_cutting).
 bool weld_coincident_border_vertices(const Positions& positions, const Faces& faces, const CornerTable& table,
                                      BorderWeld& weld, std::string& why_not);
 

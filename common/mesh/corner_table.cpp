@@ -206,7 +206,7 @@ void walk_fan(const CornerTable& table, int c, std::vector<char>& seen, std::vec
   }
 }
 
-int count_nonmanifold_vertices(const CornerTable& table, int vertex_count) {
+int count_nonmanifold_vertices(const CornerTable& table, int vertex_count, std::vector<char>* flags) {
   std::vector<int> incident(vertex_count, 0), fans(vertex_count, 0), outgoing_boundary(vertex_count, 0);
   std::vector<char> seen(table.corners(), 0);
   for (int c = 0; c < table.corners(); ++c) {
@@ -219,9 +219,13 @@ int count_nonmanifold_vertices(const CornerTable& table, int vertex_count) {
     ++fans[table.vertex[c]];
     walk_fan(table, c, seen, fan);
   }
+  if (flags != nullptr) flags->assign(vertex_count, 0);
   int bad = 0;
   for (int v = 0; v < vertex_count; ++v)
-    if (fans[v] > 1 || outgoing_boundary[v] > 1) ++bad;
+    if (fans[v] > 1 || outgoing_boundary[v] > 1) {
+      ++bad;
+      if (flags != nullptr) (*flags)[v] = 1;
+    }
   return bad;
 }
 

@@ -48,8 +48,9 @@ bool orient_faces_coherently(Faces& faces, const CornerTable& table, std::string
 void walk_fan(const CornerTable& table, int c, std::vector<char>& seen, std::vector<int>& fan);
 
 // Counts vertices whose incident faces form more than one fan (two cones touching at a
-// tip), and vertices where two boundary loops meet. Needs a coherently oriented table.
-int count_nonmanifold_vertices(const CornerTable& table, int vertex_count);
+// tip), and vertices where two boundary loops meet, flagging them in `flags` if given (one per
+// vertex). Needs a coherently oriented table.
+int count_nonmanifold_vertices(const CornerTable& table, int vertex_count, std::vector<char>* flags = nullptr);
 
 // Boundary loops, each as the vertices in the order of its faces' boundary edges.
 std::vector<std::vector<int>> boundary_loops(const CornerTable& table);

@@ -57,9 +57,8 @@ void prepare_filter_input(Positions& positions, Faces& faces, bool mend, InputMa
     report.dropped_faces = weld.dropped_faces;
     if (!build()) return;
   }
-  // Seams on a mesh with such edges: the merge refuses them (it does not join faces into edges of
-  // more than two), and the parts filtered apart would open at the seams; the filter refuses the
-  // edges as it did before they were split.
+  // Seams the merge refused on a mesh with such edges: the parts filtered apart would open at the
+  // seams; the filter refuses the edges as it did before they were split.
   if (cut > 0 && !report.not_merged_why.empty()) return;
   report.cut_edges = cut;
   report.orientation = orient_as_most_faces(faces, table, inconsistent);

@@ -41,8 +41,8 @@ struct FilterInputReport {
 
 // Orients `positions` and `faces` in place and, with `mend`, merges the seams first and splits the
 // non-manifold vertices and edges last (edges of more than two faces are left as they are without
-// `mend`, and where border vertices sit on each other too, since the merge refuses to join them);
-// `map` says where each input vertex went.
+// `mend`, and where the merge refuses seams on such a mesh: the parts filtered apart would open at
+// them); `map` says where each input vertex went.
 void prepare_filter_input(Positions& positions, Faces& faces, bool mend, InputMap& map, FilterInputReport& report);
 
 // A filter's result (one row per row of its arrays) as one row per input vertex: each vertex gets

@@ -196,8 +196,17 @@ TEST(FilterInput, SplitsABookOfManyPagesIntoAManifold) {
 // as a texture seam leaves it): the merge refuses to join faces into edges of more than two, and
 // the parts filtered apart would open at the seam, so the faces are left for the filter to refuse,
 // as they were before such edges were split. With the seam alone the merge closes it.
-TEST(FilterInput, LeavesAFinWithASeamToBeRefused) {
+// Seams on a surface with a fin: a vertex of the sphere split in two (its faces in two fans) and the
+// same surface as a soup. The merge joins them, the table then pairs the fin's edges, and both come
+// out prepared as the finned sphere itself is: the same positions at the same faces, the same cut
+// edges and copies. Before, the merge refused to make edges of more than two faces, so the seamed
+// mesh was refused and the soup filtered face by face.
+TEST(FilterInput, MergesSeamsOnASurfaceWithAFin) {
   const ArrayMesh finned = finned_sphere(3, 6);
+  const Prepared alone = prepared(finned.positions, finned.faces);
+  ASSERT_EQ(alone.report.cut_edges, 6);
+  ASSERT_GT(alone.report.split, 0);
+
   ArrayMesh seamed = finned;
   const int v = 300, copy = seamed.vertices();  // on the far side of the sphere from vertex 0's fin
   ASSERT_LT(seamed.positions.row(v).dot(seamed.positions.row(0)), 0);
@@ -211,23 +220,48 @@ TEST(FilterInput, LeavesAFinWithASeamToBeRefused) {
         ++moved;
       }
   const Prepared in = prepared(seamed.positions, seamed.faces);
-  EXPECT_FALSE(in.report.not_merged_why.empty());
-  EXPECT_EQ(in.report.cut_edges, 0);
-  EXPECT_TRUE(in.map.identity());
-  EXPECT_TRUE(in.positions == seamed.positions && in.faces == seamed.faces);
+  EXPECT_TRUE(in.report.not_merged_why.empty()) << in.report.not_merged_why;
+  EXPECT_EQ(in.report.merged, 1);
+  EXPECT_EQ(in.report.cut_edges, 6);
+  EXPECT_EQ(in.report.split, alone.report.split);
+  EXPECT_EQ(in.map.row(copy), in.map.row(v));
+  EXPECT_TRUE(in.positions == alone.positions && in.faces == alone.faces);
 
-  ArrayMesh seam_only = sphere(3);
-  seam_only.positions.conservativeResize(seam_only.vertices() + 1, 3);
-  seam_only.positions.row(seam_only.vertices() - 1) = seam_only.positions.row(v);
-  Faces faces = seam_only.faces;
-  moved = 0;
-  for (Eigen::Index f = 0; f < faces.rows() && moved < 3; ++f)
+  // The soup: every face with vertices of its own.
+  const int nf = static_cast<int>(finned.faces.rows());
+  Positions soup(3 * nf, 3);
+  Faces soup_faces(nf, 3);
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) {
+      soup.row(3 * f + k) = finned.positions.row(finned.faces(f, k));
+      soup_faces(f, k) = 3 * f + k;
+    }
+  const Prepared whole = prepared(soup, soup_faces);
+  EXPECT_TRUE(whole.report.not_merged_why.empty()) << whole.report.not_merged_why;
+  EXPECT_EQ(whole.report.merged, 3 * nf - finned.vertices());
+  EXPECT_EQ(whole.report.cut_edges, 6);
+  EXPECT_EQ(whole.report.split, alone.report.split);
+  EXPECT_EQ(whole.positions.rows(), alone.positions.rows());
+  ASSERT_EQ(whole.faces.rows(), nf);
+  for (int f = 0; f < nf; ++f)
     for (int k = 0; k < 3; ++k)
-      if (faces(f, k) == v && moved < 3) {
-        faces(f, k) = seam_only.vertices() - 1;
-        ++moved;
-      }
-  EXPECT_EQ(prepared(seam_only.positions, faces).report.merged, 1);
+      ASSERT_EQ(whole.positions.row(whole.faces(f, k)), alone.positions.row(alone.faces(f, k))) << f;
+  // each soup corner takes the result at its vertex's position that the finned sphere's vertex takes
+  const auto result_position = [](const Prepared& p, int vertex) {
+    const int row = p.map.row(vertex);
+    return Eigen::RowVector3d(p.positions.row(p.map.result_of.empty() ? row : p.map.result_of[row]));
+  };
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int vertex = finned.faces(f, k);
+      const int alone_row = alone.map.result_of.empty() ? vertex : alone.map.result_of[vertex];
+      const int whole_vertex_row = whole.map.row(3 * f + k);
+      const int whole_row = whole.map.result_of.empty() ? whole_vertex_row : whole.map.result_of[whole_vertex_row];
+      // the result row is a copy (appended by the split) in both or in neither
+      EXPECT_EQ(alone_row >= finned.vertices(), whole_row >= whole.positions.rows() - static_cast<Eigen::Index>(whole.map.copy_of.size()))
+          << f << " " << k;
+      EXPECT_EQ(result_position(whole, 3 * f + k), result_position(alone, vertex));
+    }
 }
 
 }  // namespace
