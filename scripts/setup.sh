@@ -66,7 +66,7 @@ fi
 # Test meshes from libcgal-demo's data archive.
 mkdir -p "$DATA"
 CGAL_DATA=/usr/share/doc/libcgal-dev/data.tar.gz
-for m in fandisk cube-meshed armadillo elephant elephant-with-holes sphere cow bull femur camel blade turbine spool rotor anchor_dense mannequin-devil handle; do
+for m in fandisk cube-meshed armadillo elephant elephant-with-holes sphere cow bull femur camel blade turbine spool rotor anchor_dense mannequin-devil handle boeing; do
   if [ ! -s "$DATA/$m.off" ]; then
     tar -xzf "$CGAL_DATA" -C "$DATA" --strip-components=2 "data/meshes/$m.off"
   fi

@@ -38,17 +38,14 @@ struct Triangulation {
   }
 
   // Replaces the edge facing c (and its opposite corner o) by the other diagonal of their two
-  // triangles, laid out flat. Refuses where the layout is not a strictly convex quad or the two
-  // triangles touch each other at another edge (a configuration only folded triangulations have).
+  // triangles, laid out flat. Refuses where the layout is not a strictly convex quad, or c and o lie
+  // in one triangle (folded around a vertex of one edge, which the flip would leave with none).
   bool flip(int c) {
     std::vector<int>& v = table.vertex;
     std::vector<int>& opp = table.opposite;
     const int o = opp[c];
     const int n1 = corner_next(c), p1 = corner_prev(c), n2 = corner_next(o), p2 = corner_prev(o);
-    const int t1 = corner_triangle(c), t2 = corner_triangle(o);
-    if (t1 == t2 || v[n2] != v[p1] || v[p2] != v[n1]) return false;
-    for (int x : {n1, p1, n2, p2})
-      if (opp[x] >= 0 && (corner_triangle(opp[x]) == t1 || corner_triangle(opp[x]) == t2)) return false;
+    if (corner_triangle(c) == corner_triangle(o) || v[n2] != v[p1] || v[p2] != v[n1]) return false;
     // Corner c's vertex above the edge A = v[n1] -> B = v[p1], o's below it.
     const double l = length[c];
     if (!(l > 0)) return false;
@@ -60,15 +57,18 @@ struct Triangulation {
     if (!(crossing > 0 && crossing < l)) return false;
     const double diagonal = std::hypot(x1 - x2, y1 - y2);
 
-    const int outer1 = opp[n1], outer2 = opp[n2];  // across (B, c's vertex) and (A, o's vertex)
+    // The sides (B, c's vertex) and (A, o's vertex) move from n1 and n2 to o and c; a side glued to
+    // the other one (a folded triangulation) moves with it.
+    const auto moved = [&](int x) { return x == n1 ? o : x == n2 ? c : x; };
+    const int across_c = moved(opp[n2]), across_o = moved(opp[n1]);
     v[p1] = v[o];
     v[p2] = v[c];
-    opp[c] = outer2;
-    opp[o] = outer1;
-    if (outer2 >= 0) opp[outer2] = c;
-    if (outer1 >= 0) opp[outer1] = o;
     opp[n1] = n2;
     opp[n2] = n1;
+    opp[c] = across_c;
+    if (across_c >= 0) opp[across_c] = c;
+    opp[o] = across_o;
+    if (across_o >= 0) opp[across_o] = o;
     length[c] = oa;
     length[o] = cb;
     length[n1] = length[n2] = diagonal;
@@ -95,6 +95,26 @@ CotangentLaplacian intrinsic_delaunay_laplacian(const Positions& positions, cons
         !build_corner_table(oriented, n, t.table, inconsistent, error) || inconsistent > 0)
       return extrinsic_cotangent_laplacian(positions, faces);
   }
+
+  // A mesh with borders is flipped on its tufted cover (Sharp and Crane 2020): its faces twice, the
+  // second sheet reversed and glued to the first along the borders, so that a border edge has a
+  // triangle on each side too and an obtuse angle facing it is flipped away; C and M are half the cover's.
+  const int faces_count = t.table.corners() / 3;
+  const bool cover = std::any_of(t.table.opposite.begin(), t.table.opposite.end(), [](int o) { return o < 0; });
+  if (cover) {
+    const auto twin = [&](int c) { return 3 * (faces_count + c / 3) + (c % 3 == 0 ? 0 : 3 - c % 3); };
+    CornerTable tufted;
+    tufted.vertex.resize(6 * faces_count);
+    tufted.opposite.resize(6 * faces_count);
+    for (int c = 0; c < 3 * faces_count; ++c) {
+      const int o = t.table.opposite[c];
+      tufted.vertex[c] = tufted.vertex[twin(c)] = t.table.vertex[c];
+      tufted.opposite[c] = o >= 0 ? o : twin(c);
+      tufted.opposite[twin(c)] = o >= 0 ? twin(o) : c;
+    }
+    t.table = std::move(tufted);
+  }
+  r.tufted_cover = cover;
 
   const int corners = t.table.corners();
   t.length.resize(corners);
@@ -131,6 +151,17 @@ CotangentLaplacian intrinsic_delaunay_laplacian(const Positions& positions, cons
       if (t.table.opposite[x] >= 0) stack.push_back(x);
   }
 
+  // The flips keep every edge glued to one other, coherently, with one length on both sides
+  // (checked: a broken table would give wrong weights silently; the mesh's own triangles are then used).
+  for (int c = 0; c < corners; ++c) {
+    const int o = t.table.opposite[c];
+    if (o < 0 || o >= corners || t.table.opposite[o] != c ||
+        t.table.vertex[corner_next(c)] != t.table.vertex[corner_prev(o)] || t.length[c] != t.length[o]) {
+      r = IntrinsicDelaunayReport{};
+      return extrinsic_cotangent_laplacian(positions, faces);
+    }
+  }
+
   CotangentLaplacian out;
   out.pairs.resize(corners, 2);
   out.weights.resize(corners);
@@ -143,7 +174,7 @@ CotangentLaplacian intrinsic_delaunay_laplacian(const Positions& positions, cons
       len[k] = t.length[c];
       out.pairs(c, 0) = t.table.vertex[corner_next(c)];
       out.pairs(c, 1) = t.table.vertex[corner_prev(c)];
-      out.weights[c] = 0.5 * cot[k];
+      out.weights[c] = (cover ? 0.25 : 0.5) * cot[k];
     }
     const double area = triangle_area(len[0], len[1], len[2]);
     if (!(area > 0)) continue;
@@ -157,6 +188,7 @@ CotangentLaplacian intrinsic_delaunay_laplacian(const Positions& positions, cons
           obtuse < 0 ? (len[l] * len[l] * cot[l] + len[j] * len[j] * cot[j]) / 8.0 : area * (k == obtuse ? 0.5 : 0.25);
     }
   }
+  if (cover) out.areas *= 0.5;
   return out;
 }
 

@@ -1,13 +1,15 @@
 // The cotangent Laplacian of the intrinsic Delaunay triangulation (Bobenko and Springborn 2007;
 // Fisher et al. 2007): the mesh's edges flipped, as geodesics on the surface itself, until the two
-// angles facing each interior edge sum to at most pi. The surface and its vertices stay as they
-// are; only the triangles the weights come from change. Every interior weight is then >= 0, and a
+// angles facing each edge sum to at most pi. The surface and its vertices stay as they are; only
+// the triangles the weights come from change. Every weight is then >= 0, and a
 // sliver's huge or negative cotangents no longer reach L (bull: 5% of its faces have an angle
-// under 9 degrees). A mesh already Delaunay keeps its own triangles, so its L is the extrinsic one.
+// under 9 degrees). A mesh already Delaunay (on a border: no angle over 90 degrees facing a border
+// edge) keeps its own triangles, so its L is the extrinsic one.
 //
 // Faces of no area (a needle, a vertex on its opposite edge) have no angles to flip by; their
 // edge lengths are first mollified (Sharp and Crane 2020): every length grows by the least delta
-// that leaves each triangle's inequality a margin of kMollifyMargin mean edges.
+// that leaves each triangle's inequality a margin of kMollifyMargin mean edges. A mesh with borders
+// is flipped on its tufted cover (Sharp and Crane 2020), so that its border edges' weights are >= 0 too.
 #pragma once
 
 #include "mesh/cotangent_laplacian.h"
@@ -18,7 +20,8 @@ constexpr double kMollifyMargin = 1e-4;
 
 struct IntrinsicDelaunayReport {
   bool intrinsic = false;  // false: the mesh's own triangles were used (see the header of the .cpp)
-  int flips = 0;
+  bool tufted_cover = false;  // the mesh has borders: flipped on its tufted cover (two sheets; see the .cpp)
+  int flips = 0;              // on the tufted cover, an interior edge flipped in both sheets counts twice
   double mollified = 0;    // delta, in mean edge lengths
 };
 
