@@ -182,7 +182,8 @@ TEST(IntrinsicDelaunay, ScaledMeshGivesTheSameWeights) {
 
 TEST(IntrinsicDelaunay, AFaceOfNoAreaGetsFiniteWeights) {
   // A vertex C on the border edge AB: the face (C, A, B) has no area, its angle at C is 180 degrees,
-  // and AB, a border edge, cannot be flipped away. Its own cotangents are only bounded (1e8).
+  // and no flip takes AB away (laid out against its mirror on the cover, the quad is flat, not
+  // convex). Its own cotangents are only bounded (1e8).
   test::ArrayMesh m;
   m.positions.resize(4, 3);
   m.positions << 0, 0, 0, 2, 0, 0, 1, 0, 0, 1, 1, 0;  // A, B, C, D
