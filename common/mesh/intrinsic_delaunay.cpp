@@ -114,7 +114,6 @@ CotangentLaplacian intrinsic_delaunay_laplacian(const Positions& positions, cons
     }
     t.table = std::move(tufted);
   }
-  r.tufted_cover = cover;
 
   const int corners = t.table.corners();
   t.length.resize(corners);
@@ -126,6 +125,7 @@ CotangentLaplacian intrinsic_delaunay_laplacian(const Positions& positions, cons
   const double mean = corners > 0 ? sum / corners : 0.0;
   if (!(mean > 0) || !std::isfinite(mean)) return extrinsic_cotangent_laplacian(positions, faces);
   r.intrinsic = true;
+  r.tufted_cover = cover;
 
   double delta = 0;
   for (int c = 0; c < corners; ++c)
