@@ -20,20 +20,12 @@ int nonmanifold_vertices(const Positions& positions, const Faces& faces) {
   if (!build_corner_table_cutting(faces, positions, table, inconsistent, cut, error)) return 0;
   Faces oriented = faces;
   if (!orient_faces_coherently(oriented, table, error)) return kNoOrientation;
-  build_corner_table_cutting(oriented, positions, table, inconsistent, cut, error);
-  std::vector<char> nonmanifold;
+  std::vector<char> on_cut_edge, nonmanifold;
+  build_corner_table_cutting(oriented, positions, table, inconsistent, cut, error, &on_cut_edge);
   count_nonmanifold_vertices(table, n, &nonmanifold);
-  if (cut > 0) {
-    std::vector<std::pair<int, int>> edges;
-    edges.reserve(3 * faces.rows());
-    for (Eigen::Index f = 0; f < faces.rows(); ++f)
-      for (int k = 0; k < 3; ++k)
-        edges.emplace_back(std::minmax(faces(f, k), faces(f, (k + 1) % 3)));
-    std::sort(edges.begin(), edges.end());
-    for (size_t i = 0; i + 2 < edges.size(); ++i)
-      if (edges[i] == edges[i + 2]) nonmanifold[edges[i].first] = nonmanifold[edges[i].second] = 0;
-  }
-  return static_cast<int>(std::count(nonmanifold.begin(), nonmanifold.end(), 1));
+  int count = 0;
+  for (int v = 0; v < n; ++v) count += nonmanifold[v] && !on_cut_edge[v] ? 1 : 0;
+  return count;
 }
 
 }  // namespace

@@ -72,7 +72,7 @@ int pair_sheets(const Positions& p, const std::vector<int>& part, const std::vec
 // `positions` null: an edge of more than two faces fails the build; else its faces are paired by
 // pair_sheets and the edge counted in `cut_edges`.
 bool build_table(const Faces& faces, int vertex_count, const Positions* positions, CornerTable& table,
-                 int& inconsistent_edges, int* cut_edges, std::string& error) {
+                 int& inconsistent_edges, int* cut_edges, std::vector<char>* on_cut_edge, std::string& error) {
   const int nf = static_cast<int>(faces.rows());
   table.vertex.resize(3 * static_cast<size_t>(nf));
   table.opposite.assign(3 * static_cast<size_t>(nf), -1);
@@ -99,6 +99,7 @@ bool build_table(const Faces& faces, int vertex_count, const Positions* position
 
   std::vector<int> start, corners;
   group_corners_by_edge(table, vertex_count, start, corners);
+  if (on_cut_edge) on_cut_edge->assign(vertex_count, 0);
   inconsistent_edges = 0;
   int nonmanifold_edges = 0;
   std::vector<std::pair<int, int>> crowded;  // edges of more than two faces: their corners' range
@@ -123,6 +124,7 @@ bool build_table(const Faces& faces, int vertex_count, const Positions* position
       } else if (j - i > 2) {
         ++nonmanifold_edges;
         crowded.emplace_back(i, j - i);
+        if (on_cut_edge) (*on_cut_edge)[v] = (*on_cut_edge)[far] = 1;
       }
       i = j;
     }
@@ -147,13 +149,14 @@ bool build_table(const Faces& faces, int vertex_count, const Positions* position
 
 bool build_corner_table(const Faces& faces, int vertex_count, CornerTable& table, int& inconsistent_edges,
                         std::string& error) {
-  return build_table(faces, vertex_count, nullptr, table, inconsistent_edges, nullptr, error);
+  return build_table(faces, vertex_count, nullptr, table, inconsistent_edges, nullptr, nullptr, error);
 }
 
 bool build_corner_table_cutting(const Faces& faces, const Positions& positions, CornerTable& table,
-                                int& inconsistent_edges, int& cut_edges, std::string& error) {
+                                int& inconsistent_edges, int& cut_edges, std::string& error,
+                                std::vector<char>* on_cut_edge) {
   return build_table(faces, static_cast<int>(positions.rows()), &positions, table, inconsistent_edges, &cut_edges,
-                     error);
+                     on_cut_edge, error);
 }
 
 bool orient_faces_coherently(Faces& faces, const CornerTable& table, std::string& error) {

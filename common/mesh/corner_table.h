@@ -34,9 +34,11 @@ bool build_corner_table(const Faces& faces, int vertex_count, CornerTable& table
 // The same, but an edge of more than two faces does not fail the build: its faces are paired two
 // by two, two of one part of the surface without such edges first, then two whose orientations
 // agree, then the two nearest to lying flat across it (a surface with a fin on it stays joined),
-// and a face left over is left unpaired, a border; `cut_edges` counts such edges.
+// and a face left over is left unpaired, a border; `cut_edges` counts such edges, `on_cut_edge` (if
+// given) flags their vertices (one per vertex).
 bool build_corner_table_cutting(const Faces& faces, const Positions& positions, CornerTable& table,
-                                int& inconsistent_edges, int& cut_edges, std::string& error);
+                                int& inconsistent_edges, int& cut_edges, std::string& error,
+                                std::vector<char>* on_cut_edge = nullptr);
 
 // Flips faces so that every pair of neighbours agrees on orientation, one connected
 // component at a time. Fails on a non-orientable component (a Moebius strip).

@@ -30,28 +30,26 @@ Positions corner_cotangents(const Positions& positions, const Faces& faces) {
   return cot;
 }
 
+double mixed_voronoi_share(const double squared[3], const double cot[3], double area, int k) {
+  for (int i = 0; i < 3; ++i)
+    if (cot[i] < 0) return area * (k == i ? 0.5 : 0.25);
+  const int j = (k + 1) % 3, l = (k + 2) % 3;
+  return (squared[l] * cot[l] + squared[j] * cot[j]) / 8.0;
+}
+
 Eigen::VectorXd mixed_voronoi_areas(const Positions& positions, const Faces& faces) {
   Eigen::VectorXd area = Eigen::VectorXd::Zero(positions.rows());
   for (Eigen::Index f = 0; f < faces.rows(); ++f) {
     const Eigen::Vector3d p[3] = {row(positions, faces(f, 0)), row(positions, faces(f, 1)), row(positions, faces(f, 2))};
     const double face_area = 0.5 * (p[1] - p[0]).cross(p[2] - p[0]).norm();
     if (!(face_area > 0)) continue;
-    int obtuse = -1;
-    for (int k = 0; k < 3; ++k)
-      if ((p[(k + 1) % 3] - p[k]).dot(p[(k + 2) % 3] - p[k]) < 0) obtuse = k;
+    double squared[3], cot[3];
     for (int k = 0; k < 3; ++k) {
-      double a;
-      if (obtuse < 0) {
-        // Voronoi region of corner k: (|e_kj|^2 cot(angle at l) + |e_kl|^2 cot(angle at j)) / 8
-        const int j = (k + 1) % 3, l = (k + 2) % 3;
-        const double cot_j = cotangent(p[k] - p[j], p[l] - p[j]);
-        const double cot_l = cotangent(p[k] - p[l], p[j] - p[l]);
-        a = ((p[j] - p[k]).squaredNorm() * cot_l + (p[l] - p[k]).squaredNorm() * cot_j) / 8.0;
-      } else {
-        a = face_area * (k == obtuse ? 0.5 : 0.25);
-      }
-      area[faces(f, k)] += a;
+      const int j = (k + 1) % 3, l = (k + 2) % 3;
+      squared[k] = (p[l] - p[j]).squaredNorm();
+      cot[k] = cotangent(p[j] - p[k], p[l] - p[k]);
     }
+    for (int k = 0; k < 3; ++k) area[faces(f, k)] += mixed_voronoi_share(squared, cot, face_area, k);
   }
   return area;
 }

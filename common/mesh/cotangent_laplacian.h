@@ -24,6 +24,12 @@ struct CotangentLaplacian {
 // Zero-area faces get bounded cotangents instead of infinities.
 Positions corner_cotangents(const Positions& positions, const Faces& faces);
 
+// Corner k's share of a triangle's mixed Voronoi area (Meyer et al. 2003), from the squared lengths
+// of the edges facing its corners, their cotangents and its area: the Voronoi region
+// (|e_kj|^2 cot l + |e_kl|^2 cot j) / 8 in a non-obtuse triangle, else half the area at the obtuse
+// corner and a quarter at the others.
+double mixed_voronoi_share(const double squared[3], const double cot[3], double area, int k);
+
 // Mixed Voronoi area per vertex: Voronoi area in non-obtuse triangles, half the triangle's
 // area at an obtuse corner and a quarter at the others. Vertices of no face get 0.
 Eigen::VectorXd mixed_voronoi_areas(const Positions& positions, const Faces& faces);

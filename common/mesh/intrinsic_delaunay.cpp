@@ -167,26 +167,18 @@ CotangentLaplacian intrinsic_delaunay_laplacian(const Positions& positions, cons
   out.weights.resize(corners);
   out.areas = Eigen::VectorXd::Zero(n);
   for (int f = 0; f < corners / 3; ++f) {
-    double cot[3], len[3];
+    double cot[3], squared[3];
     for (int k = 0; k < 3; ++k) {
       const int c = 3 * f + k;
       cot[k] = t.cotangent(c);
-      len[k] = t.length[c];
+      squared[k] = t.length[c] * t.length[c];
       out.pairs(c, 0) = t.table.vertex[corner_next(c)];
       out.pairs(c, 1) = t.table.vertex[corner_prev(c)];
       out.weights[c] = (cover ? 0.25 : 0.5) * cot[k];
     }
-    const double area = triangle_area(len[0], len[1], len[2]);
+    const double area = triangle_area(t.length[3 * f], t.length[3 * f + 1], t.length[3 * f + 2]);
     if (!(area > 0)) continue;
-    int obtuse = -1;
-    for (int k = 0; k < 3; ++k)
-      if (cot[k] < 0) obtuse = k;
-    for (int k = 0; k < 3; ++k) {
-      const int j = (k + 1) % 3, l = (k + 2) % 3;
-      // Voronoi region of corner k in a non-obtuse triangle: (|e_kj|^2 cot l + |e_kl|^2 cot j) / 8
-      out.areas[t.table.vertex[3 * f + k]] +=
-          obtuse < 0 ? (len[l] * len[l] * cot[l] + len[j] * len[j] * cot[j]) / 8.0 : area * (k == obtuse ? 0.5 : 0.25);
-    }
+    for (int k = 0; k < 3; ++k) out.areas[t.table.vertex[3 * f + k]] += mixed_voronoi_share(squared, cot, area, k);
   }
   if (cover) out.areas *= 0.5;
   return out;
