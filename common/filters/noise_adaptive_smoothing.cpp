@@ -122,40 +122,18 @@ Positions taubin_slides(const Positions& solved, const Positions& v, const Posit
   return x;
 }
 
-// How steps 3 and 4b are done; step 4b's recorrupted risk chooses among those the options allow.
-struct Finish {
-  bool taubin_slide = false;  // step 3 by Taubin's slide, not by the cap
-  bool normal_pass = false;   // step 4b
-};
-
-std::vector<Finish> allowed_finishes(const NoiseAdaptiveSmoothingOptions& options, double share) {
+std::vector<SmoothingFinish> allowed_finishes(const NoiseAdaptiveSmoothingOptions& options, double share) {
   if (options.forced_finish >= 0) return {{(options.forced_finish & 1) != 0, (options.forced_finish & 2) != 0}};
   // Where the input holds clearly less tangential noise than isotropic noise of sigma (share
   // below kSlideShare), the slide would be mostly error, and the copies' risk cannot see it:
   // their tangential noise is drawn at the share, which the triangulation's own offsets fill
   // (docs/quality.md items 22 and 23).
   const bool slide_allowed = options.taubin_slide && share >= kSlideShare;
-  std::vector<Finish> finishes;
+  std::vector<SmoothingFinish> finishes;
   for (bool slide : {false, true})
     for (bool pass : {false, true})
       if ((!slide || slide_allowed) && (!pass || options.face_normal_pass)) finishes.push_back({slide, pass});
   return finishes;
-}
-
-// The finish of least mean risk, but Taubin's slide only if every draw scores it below the best
-// capped finish: its choice hangs on the tangential noise, which the copies only know as well as
-// sigma's estimate, and where one draw says otherwise it is a near tie that the draws decide (lab:
-// 58 of 66 organic cases below Taubin on both numbers, against 57 by the mean alone;
-// docs/quality.md item 22).
-size_t slide_or_cap(const std::vector<Finish>& finishes, const RecorruptedRisks& risks, const std::vector<double>& mean) {
-  size_t best = 0, capped = 0;
-  for (size_t k = 0; k < finishes.size(); ++k) {
-    if (mean[k] < mean[best]) best = k;
-    if (!finishes[k].taubin_slide && mean[k] < mean[capped]) capped = k;
-  }
-  for (const std::vector<double>& draw : risks.per_draw)
-    if (draw[best] >= draw[capped]) return capped;
-  return best;
 }
 
 // Step 3, Taubin's slide or the cap, then the borders held (item 35), and step 4 on the solve's
@@ -187,7 +165,7 @@ Positions finish_smoothing(Positions x, const Positions& v, const Faces& faces, 
 bool finish_risks(const Positions& v, const Positions& v_normals, const Faces& faces, const VertexAdjacency& adjacency,
                   const BorderNeighbours& full_border, double sigma, double tangential_share, double mu,
                   double max_error,
-                  const NoiseAdaptiveSmoothingOptions& options, const std::vector<Finish>& finishes,
+                  const NoiseAdaptiveSmoothingOptions& options, const std::vector<SmoothingFinish>& finishes,
                   RecorruptedRisks& risks) {
   const bool sample = v.rows() > kPassSampleVertices;
   std::vector<int> kept;
@@ -222,7 +200,7 @@ bool finish_risks(const Positions& v, const Positions& v_normals, const Faces& f
     std::optional<Positions> slid[2];
     FinishCounts counts;
     outputs.clear();
-    for (const Finish& finish : finishes) {
+    for (const SmoothingFinish& finish : finishes) {
       std::optional<Positions>& x = slid[finish.taubin_slide];
       if (!x)
         x = slid_and_unfolded(solved, y1, y1_normals, f, a, border, copy_sigma, share, finish.taubin_slide, options, counts);
@@ -240,6 +218,19 @@ bool finish_risks(const Positions& v, const Positions& v_normals, const Faces& f
 }
 
 }  // namespace
+
+size_t choose_finish(const std::vector<SmoothingFinish>& finishes, const std::vector<std::vector<double>>& per_draw,
+                     const std::vector<double>& mean) {
+  size_t best = 0, capped = finishes.size();
+  for (size_t k = 0; k < finishes.size(); ++k) {
+    if (mean[k] < mean[best]) best = k;
+    if (!finishes[k].taubin_slide && (capped == finishes.size() || mean[k] < mean[capped])) capped = k;
+  }
+  if (capped == finishes.size()) return best;
+  for (const std::vector<double>& draw : per_draw)
+    if (draw[best] >= draw[capped]) return capped;
+  return best;
+}
 
 bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const NoiseAdaptiveSmoothingOptions& options,
                            Positions& result, NoiseAdaptiveSmoothingReport& report, std::string& error,
@@ -371,8 +362,8 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
 
   const double share = options.tangential_share ? tangential_noise_share(v, v_normals, adjacency, sigma) : 1.0;
   const BorderNeighbours border = options.hold_borders ? border_neighbours(faces, adjacency) : BorderNeighbours{};
-  const std::vector<Finish> finishes = allowed_finishes(options, share);
-  Finish chosen = finishes.front();
+  const std::vector<SmoothingFinish> finishes = allowed_finishes(options, share);
+  SmoothingFinish chosen = finishes.front();
   if (finishes.size() > 1) {
     // Scored on recorrupted copies, smoothed with each finish. A copy whose solve does not
     // converge leaves the plain finish: the smoothing itself is done.
@@ -383,7 +374,7 @@ bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const
     const std::vector<double> mean = report.finish_risk_scored ? risks.mean() : std::vector<double>{};
     report.finish_risk_scored = report.finish_risk_scored && mean[0] > 0;
     if (report.finish_risk_scored) {
-      const size_t best = slide_or_cap(finishes, risks, mean);
+      const size_t best = choose_finish(finishes, risks.per_draw, mean);
       chosen = finishes[best];
       report.finish_risk_change = mean[best] / mean[0] - 1;
     }

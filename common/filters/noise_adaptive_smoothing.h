@@ -63,7 +63,9 @@
 #include "signal/noise_estimate.h"
 #include "util/stage_clock.h"
 
+#include <cstddef>
 #include <functional>
+#include <vector>
 
 namespace hht {
 
@@ -186,6 +188,21 @@ struct NoiseAdaptiveSmoothingReport {
   double error_bound = 0;      // largest position error of the solve, at most, / bbox diagonal
   std::vector<StageTime> stages;
 };
+
+// How steps 3 and 4b are done; step 4b's recorrupted risk chooses among those the options allow.
+struct SmoothingFinish {
+  bool taubin_slide = false;  // step 3 by Taubin's slide, not by the cap
+  bool normal_pass = false;   // step 4b
+};
+
+// Step 4b's choice: the finish of least `mean` risk (`per_draw`: each draw's risk per finish), but
+// Taubin's slide only if every draw scores it below the best capped finish: its choice hangs on
+// the tangential noise, which the copies know only as well as sigma's estimate, and where one draw
+// says otherwise it is a near tie that the draws decide (lab: 58 of 66 organic cases below Taubin
+// on both numbers, against 57 by the mean alone; docs/quality.md item 22). Without a capped
+// finish: the least mean.
+size_t choose_finish(const std::vector<SmoothingFinish>& finishes, const std::vector<std::vector<double>>& per_draw,
+                     const std::vector<double>& mean);
 
 bool noise_adaptive_smooth(const Positions& positions, const Faces& faces, const NoiseAdaptiveSmoothingOptions& options,
                            Positions& result, NoiseAdaptiveSmoothingReport& report, std::string& error,

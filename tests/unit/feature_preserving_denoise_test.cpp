@@ -270,19 +270,36 @@ TEST(FeaturePreservingDenoise, WideRangeAwayFromCreases) {
 
 // The refinement's vertex update folds slivers at anchor_dense's creases even at light noise
 // (25 faces turned over against the input at 2%); stood back up, none is left and E_a drops
-// (docs/quality.md item 15).
+// (docs/quality.md item 15). The planar regions' flattening, which stands up the faces it turns
+// too, is left out: with it the refinement's own step could be missing unseen.
 TEST(FeaturePreservingDenoise, RefinementLeavesNoFaceTurnedOverAgainstItsStart) {
   const test::ArrayMesh m = test::load_data_mesh("anchor_dense");
   const Positions noisy = add_gaussian_noise(m.positions, m.faces, 5, NoiseDirection::Normal, 11);
-  DenoiseOptions without;
+  DenoiseOptions with;
+  with.flatten_planar_regions = false;
+  DenoiseOptions without = with;
   without.refine_unturn = false;
   DenoiseReport report;
-  const Positions ours = denoise(noisy, m.faces, {}, &report), before = denoise(noisy, m.faces, without);
+  const Positions ours = denoise(noisy, m.faces, with, &report), before = denoise(noisy, m.faces, without);
   ASSERT_FALSE(report.untangled);
   EXPECT_GT(flipped_faces(before, noisy, m.faces), 15);
   EXPECT_LE(flipped_faces(ours, noisy, m.faces), 3);
   EXPECT_GT(report.refine_unturned_faces, 15);
   EXPECT_LT(mean_face_normal_error_degrees(ours, m.positions, m.faces), 0.95 * mean_face_normal_error_degrees(before, m.positions, m.faces));
+}
+
+// Making the planar regions flat moves their vertices onto planes fitted to the refined mesh and
+// turns slivers at their rims over as the vertex update does; those are stood back up the same
+// way (anchor_dense at 10% along the normals: 24 faces turned over against the input without,
+// E_a 1.89 against 1.82).
+TEST(FeaturePreservingDenoise, FlatteningLeavesNoFaceTurnedOverAgainstItsStart) {
+  const test::ArrayMesh m = test::load_data_mesh("anchor_dense");
+  const Positions noisy = add_gaussian_noise(m.positions, m.faces, 10, NoiseDirection::Normal, 11);
+  DenoiseReport report;
+  const Positions ours = denoise(noisy, m.faces, {}, &report);
+  ASSERT_FALSE(report.untangled);
+  EXPECT_GT(report.planar_regions, 5);
+  EXPECT_LE(flipped_faces(ours, noisy, m.faces), 3);
 }
 
 // A refinement round that moves the mesh by more than kRoundDriftStep noise sigmas is the guided
