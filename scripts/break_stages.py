@@ -34,9 +34,11 @@ def failing_tests():
                                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True))
     failed = set()
     try:
-        for shard in shards:
+        for index, shard in enumerate(shards):
             out, _ = shard.communicate()
-            failed.update(re.findall(r"^\[  FAILED  \] (\w[\w/]*\.\w[\w/]*)", out, re.M))
+            named = re.findall(r"^\[  FAILED  \] (\w[\w/]*\.\w[\w/]*)", out, re.M)
+            # A shard that crashed or aborted names no failed test: it caught the break all the same.
+            failed.update(named or ([] if shard.returncode == 0 else ["shard %d exited %d" % (index, shard.returncode)]))
     finally:
         for shard in shards:
             shard.kill()
