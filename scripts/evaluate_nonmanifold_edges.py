@@ -98,7 +98,8 @@ def main():
         q.write_ply(plain_clean, v, faces)
         q.write_ply(finned_clean, fv, ff)
         soup_clean = os.path.join(work, name + "_soup_clean.ply")
-        q.write_ply(soup_clean, *soup_of(fv, ff))
+        if args.soup:
+            q.write_ply(soup_clean, *soup_of(fv, ff))
         for level in [int(x) for x in args.levels.split(",")]:
             noisy = q.add_noise(fv, ff, level, "isotropic", 7)
             plain_in = os.path.join(work, "%s_%d.ply" % (name, level))
@@ -106,7 +107,8 @@ def main():
             q.write_ply(plain_in, noisy[: len(v)], faces)
             q.write_ply(finned_in, noisy, ff)
             soup_in = os.path.join(work, "%s_soup_%d.ply" % (name, level))
-            q.write_ply(soup_in, *soup_of(noisy, ff))
+            if args.soup:
+                q.write_ply(soup_in, *soup_of(noisy, ff))
             before = q.metrics(v, faces, folded, diagonal, noisy[: len(v)])
             for script in ("smooth", "denoise"):
                 cells = []
