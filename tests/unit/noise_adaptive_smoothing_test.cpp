@@ -1,6 +1,7 @@
 #include "evaluation/denoise_metrics.h"
 #include "evaluation/gaussian_noise.h"
 #include "filters/noise_adaptive_smoothing.h"
+#include "reconstruction/recorrupted_risk.h"
 #include "test_meshes.h"
 #include "mesh/uniform_laplacian.h"
 #include "mesh/vertex_adjacency.h"
@@ -203,12 +204,7 @@ TEST(NoiseAdaptiveSmoothing, ScoresTheFinishesOnCopiesOfTheInputsNoiseShape) {
 // or never.
 TEST(NoiseAdaptiveSmoothing, TakesTheSlideOnlyWhereEveryDrawFavoursIt) {
   const std::vector<SmoothingFinish> finishes = {{false, false}, {false, true}, {true, false}, {true, true}};
-  auto mean = [](const std::vector<std::vector<double>>& draws) {
-    std::vector<double> m(draws[0].size(), 0.0);
-    for (const std::vector<double>& d : draws)
-      for (size_t k = 0; k < d.size(); ++k) m[k] += d[k] / static_cast<double>(draws.size());
-    return m;
-  };
+  auto mean = [](const std::vector<std::vector<double>>& draws) { return RecorruptedRisks{draws}.mean(); };
   // The slide with the pass lowest in the mean and in every draw: taken.
   const std::vector<std::vector<double>> agree = {{1.0, 0.9, 0.85, 0.8}, {1.0, 0.95, 0.9, 0.85}, {1.0, 0.9, 0.9, 0.88}};
   EXPECT_EQ(choose_finish(finishes, agree, mean(agree)), 3u);
