@@ -80,6 +80,38 @@ TEST(TangentialNoise, LeavesBoundaryVerticesOut) {
   EXPECT_LT(share(holes, 0, NoiseDirection::Normal, 0.1), 0.1);
 }
 
+// The expectation counts two coordinates, those of each vertex's tangent plane, so the second
+// difference is projected on it again: the neighbours' offsets lie in their own planes. On a
+// coarse torus (8 vertices around the tube: the normals turn by 45 degrees from one to the next)
+// noise along the normals gives them a part along the vertex's normal, which counted would raise
+// the reading by half. Checked against the definition in dense matrices: D = I - W, the offsets
+// O = P D V and S = P D O (P the projections on the tangent planes), share = |S|^2 over
+// 2 sigma^2 |D^2|^2 (Frobenius norms).
+TEST(TangentialNoise, ReadsTheSecondDifferencesOnEachTangentPlane) {
+  const test::ArrayMesh torus = test::torus(1.0, 0.35, 12, 8);
+  const int n = torus.vertices();
+  const double sigma = 0.1 * mean_edge_length(torus.positions, torus.faces);
+  const Positions noisy = add_gaussian_noise(torus.positions, torus.faces, 10, NoiseDirection::Normal, 5);
+  const Positions normals = area_weighted_vertex_normals(torus.positions, torus.faces).rowwise().normalized();
+
+  Eigen::MatrixXd adjacent = Eigen::MatrixXd::Zero(n, n);
+  for (Eigen::Index f = 0; f < torus.faces.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = torus.faces(f, k), b = torus.faces(f, (k + 1) % 3);
+      adjacent(a, b) = adjacent(b, a) = 1;
+    }
+  const Eigen::MatrixXd d = Eigen::MatrixXd::Identity(n, n) - (adjacent.rowwise().sum().cwiseInverse().asDiagonal() * adjacent);
+  auto project = [&](const Eigen::MatrixXd& x) {
+    return Eigen::MatrixXd(x - (x.cwiseProduct(normals).rowwise().sum().asDiagonal() * normals));
+  };
+  const Eigen::MatrixXd second = project(d * project(d * noisy));
+  const double reference = second.squaredNorm() / (2 * sigma * sigma * (d * d).squaredNorm());
+  ASSERT_LT(reference, 0.5);  // below the cap at 1
+
+  const double read = tangential_noise_share(noisy, normals, vertex_adjacency(torus.faces, n), sigma);
+  EXPECT_NEAR(read, reference, 1e-9 * reference);
+}
+
 TEST(TangentialNoise, NoSigmaOrNoInteriorVertexReadsOne) {
   const test::ArrayMesh s = test::sphere(2);
   const Positions normals = area_weighted_vertex_normals(s.positions, s.faces).rowwise().normalized();
