@@ -21,7 +21,7 @@ int nonmanifold_vertices(const Positions& positions, const Faces& faces) {
   Faces oriented = faces;
   if (!orient_faces_coherently(oriented, table, error)) return kNoOrientation;
   std::vector<char> on_cut_edge, nonmanifold;
-  build_corner_table_cutting(oriented, positions, table, inconsistent, cut, error, &on_cut_edge);
+  if (!build_corner_table_cutting(oriented, positions, table, inconsistent, cut, error, &on_cut_edge)) return 0;
   count_nonmanifold_vertices(table, n, &nonmanifold);
   int count = 0;
   for (int v = 0; v < n; ++v) count += nonmanifold[v] && !on_cut_edge[v] ? 1 : 0;
