@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -12,6 +13,81 @@ namespace hht {
 namespace {
 
 double diagonal(const Positions& p) { return (p.colwise().maxCoeff() - p.colwise().minCoeff()).norm(); }
+
+// One iteration as the header writes it, by brute force: the vertices a walk reaches (P's one-ring,
+// and every vertex inside the ball joined to P through vertices inside it, found by growing that
+// set to a fixed point), the annuli's centroids, D^2 over all three annuli, and the weighted
+// normal offset. Positions in `p`, radii in mean edge lengths `l`.
+Positions nonlocal_means_by_hand(const Positions& p, const Faces& f, const NonLocalMeansOptions& o) {
+  const Eigen::Index n = p.rows();
+  const double l = mean_edge_length(p, f), eta1 = o.eta1 * l, eta2 = o.eta2 * l, eta3 = o.eta3 * l;
+  Eigen::MatrixXi adjacent = Eigen::MatrixXi::Zero(n, n);
+  Positions normals = Positions::Zero(n, 3);
+  for (Eigen::Index i = 0; i < f.rows(); ++i) {
+    const Eigen::RowVector3d a = p.row(f(i, 0)), b = p.row(f(i, 1)), c = p.row(f(i, 2));
+    for (int k = 0; k < 3; ++k) {
+      normals.row(f(i, k)) += (b - a).cross(c - a);
+      adjacent(f(i, k), f(i, (k + 1) % 3)) = adjacent(f(i, (k + 1) % 3), f(i, k)) = 1;
+    }
+  }
+  normals.rowwise().normalize();
+  auto reached = [&](Eigen::Index v, double radius) {
+    std::vector<char> in(n, 0);
+    in[v] = 1;
+    for (bool grew = true; grew;) {
+      grew = false;
+      for (Eigen::Index q = 0; q < n; ++q)
+        if (!in[q] && (p.row(q) - p.row(v)).norm() < radius)
+          for (Eigen::Index r = 0; r < n && !in[q]; ++r)
+            if (in[r] && adjacent(q, r)) in[q] = grew = true;
+    }
+    for (Eigen::Index q = 0; q < n; ++q) in[q] = q != v && (in[q] || adjacent(v, q));
+    return in;
+  };
+  std::vector<std::array<Eigen::RowVector3d, 3>> centroid(n);
+  for (Eigen::Index v = 0; v < n; ++v) {
+    const std::vector<char> in = reached(v, 3.5 * eta3);
+    for (int a = 0; a < 3; ++a) {
+      Eigen::RowVector3d sum = Eigen::RowVector3d::Zero();
+      int count = 0;
+      for (Eigen::Index q = 0; q < n; ++q) {
+        const double x = (p.row(q) - p.row(v)).norm() / eta3;
+        if (in[q] && (a == 0 ? x < 1.5 : x >= a + 0.5 && x < a + 1.5)) {
+          sum += p.row(q);
+          ++count;
+        }
+      }
+      centroid[v][a] = count > 0 ? Eigen::RowVector3d(sum / count) : a > 0 ? centroid[v][a - 1] : Eigen::RowVector3d(p.row(v));
+    }
+  }
+  Positions out = p;
+  for (Eigen::Index v = 0; v < n; ++v) {
+    const std::vector<char> in = reached(v, eta1);
+    const Eigen::RowVector3d nv = normals.row(v);
+    double sum_wh = 0, sum_w = 0;
+    for (Eigen::Index q = 0; q < n; ++q) {
+      if (!in[q]) continue;
+      double d2 = 0;
+      for (int a = 0; a < 3; ++a) d2 += std::pow(nv.dot(centroid[q][a] - centroid[v][a]), 2);
+      const Eigen::RowVector3d d = p.row(q) - p.row(v);
+      const double w = std::exp(-d.squaredNorm() / (2 * std::pow(eta1 / 2, 2))) * std::exp(-d2 / (eta2 * eta2));
+      sum_wh += w * nv.dot(d);
+      sum_w += w;
+    }
+    out.row(v) += nv * (sum_wh / sum_w);
+  }
+  return out;
+}
+
+// Fails with the neighbourhoods compared on their first annulus only, or the walk not kept within
+// the ball, or the spatial kernel's width other than eta1 / 2.
+TEST(NonLocalMeans, OneIterationIsTheDocumentedAverage) {
+  const test::ArrayMesh m = test::torus(3.0, 1.0, 32, 16);
+  const Positions noisy = add_gaussian_noise(m.positions, m.faces, 20.0, NoiseDirection::Random, 3);
+  const Positions result = nonlocal_means_denoise(noisy, m.faces, NonLocalMeansOptions{});
+  EXPECT_LT((result - nonlocal_means_by_hand(noisy, m.faces, NonLocalMeansOptions{})).rowwise().norm().maxCoeff(),
+            1e-12 * diagonal(noisy));
+}
 
 TEST(NonLocalMeans, RemovesNormalNoiseOnATorus) {
   const test::ArrayMesh m = test::torus(3.0, 1.0, 96, 48);
