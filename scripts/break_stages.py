@@ -1,10 +1,13 @@
 #!/usr/bin/env python3
-"""Break one stage at a time and check that a unit test fails (docs/testing.md, "Breaking stages").
+"""Break one stage at a time and check that a test fails (docs/testing.md, "Breaking stages").
 
 Each entry of tests/stage_breaks.json replaces one exact piece of a source file by a plausible
-but wrong one (a step left out, a decision always taken, a rule made simpler). For each, this
-script writes the change into the checkout, rebuilds the unit tests (build/ must be configured:
-./scripts/build.sh), runs them in two shards and restores the file, whatever happens. A break no
+but wrong one (a step left out, a decision always taken, a rule made simpler, a filter parameter
+ignored). For each, this script writes the change into the checkout, rebuilds the unit tests
+(build/ must be configured: ./scripts/build.sh) and runs them in two shards, or, for an entry
+with "suite": "meshlabserver" (the plugin's code), rebuilds the plugin and runs the tests that
+drive the staged meshlabserver (ctest -L meshlabserver); then it restores the file, whatever
+happens. A break no
 test catches is reported as SURVIVED; an entry whose text is not found once is STALE (the code
 moved on: update the entry). An entry with a "survives" note is a known gap, reported as
 `known` with the note. Exit status 1 if any other survived or an entry is stale.
@@ -45,11 +48,26 @@ def failing_tests():
     return sorted(failed)
 
 
-def build():
+def failing_meshlabserver_tests():
+    run = subprocess.run(["ctest", "-L", "meshlabserver", "-j2", "--timeout", "600"], cwd=BUILD,
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    failed = re.findall(r"^\s*\d+ - (\S+)", out_after(run.stdout, "The following tests FAILED:"), re.M)
+    return sorted(failed or ([] if run.returncode == 0 else ["ctest exited %d" % run.returncode]))
+
+
+def out_after(text, marker):
+    return text[text.index(marker):] if marker in text else ""
+
+
+TARGETS = {"unit": "hht_unit_tests", "meshlabserver": "filter_hht"}
+FAILING = {"unit": failing_tests, "meshlabserver": failing_meshlabserver_tests}
+
+
+def build(target="hht_unit_tests"):
     # In a session of its own, so that an interrupted run stops the compilers too: one left
     # running would write a broken object after the source is put back, newer than it, and
     # every later build would keep the break.
-    make = subprocess.Popen(["cmake", "--build", BUILD, "--target", "hht_unit_tests", "-j2"], start_new_session=True,
+    make = subprocess.Popen(["cmake", "--build", BUILD, "--target", target, "-j2"], start_new_session=True,
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     try:
         out, _ = make.communicate()
@@ -84,12 +102,13 @@ def main():
         try:
             with open(path, "w") as f:
                 f.write(source.replace(b["old"], b["new"]))
-            status, out = build()
+            suite = b.get("suite", "unit")
+            status, out = build(TARGETS[suite])
             if status != 0:
                 print("NO BUILD  %s\n%s" % (label, out[-3000:]), flush=True)
                 bad += 1
                 continue
-            failed = failing_tests()
+            failed = FAILING[suite]()
             known = b.get("survives")
             bad += not failed and not known
             if failed:
@@ -101,8 +120,9 @@ def main():
             with open(path, "w") as f:
                 f.write(source)
             os.utime(path)  # newer than any object built from the break
-    if build()[0] != 0:
-        sys.exit("the restored tree does not build")
+    for suite in sorted({b.get("suite", "unit") for b in breaks}):
+        if build(TARGETS[suite])[0] != 0:
+            sys.exit("the restored tree does not build")
     known = sum(1 for b in breaks if b.get("survives"))
     print("%d of %d breaks caught or known to survive (%d known)" % (len(breaks) - bad, len(breaks), known))
     sys.exit(1 if bad else 0)
