@@ -247,9 +247,14 @@ Positions guided_pass_by_hand(const Positions& p, const Faces& f, double sigma) 
   return joint_pass_by_hand(f, h, guide, sigma, false);
 }
 
+// cube-meshed with 20% isotropic noise: faces of unlike areas within a patch, and creases.
+Positions noisy_meshed_cube(const test::ArrayMesh& m) {
+  return add_gaussian_noise(m.positions, m.faces, 20, NoiseDirection::Isotropic, 3);
+}
+
 TEST(BilateralNormalFilter, OnePassIsThePapersWeightedMean) {
   const test::ArrayMesh m = test::load_data_mesh("cube-meshed");
-  const Positions noisy = add_gaussian_noise(m.positions, m.faces, 20, NoiseDirection::Isotropic, 3);
+  const Positions noisy = noisy_meshed_cube(m);
   Positions normals;
   std::string error;
   ASSERT_TRUE(bilateral_face_normals(noisy, m.faces, 1, 0.35, normals, error)) << error;
@@ -267,7 +272,7 @@ TEST(BilateralNormalFilter, OnePassIsThePapersWeightedMean) {
 // cube-meshed's regular grid) and whose creases make the patches' choice matter.
 TEST(GuidedNormalFilter, OnePassIsTheGuidedMeanWrittenOut) {
   const test::ArrayMesh m = test::load_data_mesh("cube-meshed");
-  const Positions noisy = add_gaussian_noise(m.positions, m.faces, 20, NoiseDirection::Isotropic, 3);
+  const Positions noisy = noisy_meshed_cube(m);
   Positions normals;
   std::string error;
   ASSERT_TRUE(guided_face_normals(noisy, m.faces, 1, 0.35, normals, error)) << error;
