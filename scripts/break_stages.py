@@ -15,6 +15,7 @@ moved on: update the entry). An entry with a "survives" note is a known gap, rep
   python3 scripts/break_stages.py                # every entry (about a minute each)
   python3 scripts/break_stages.py --match planar  # entries whose stage or change says so
   python3 scripts/break_stages.py --start 45      # from the 46th entry on
+  python3 scripts/break_stages.py --stop 79       # the library's entries only (unit tests)
 """
 import argparse
 import json
@@ -82,11 +83,12 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--match", default="", help="only entries whose stage or change contains this")
     parser.add_argument("--start", type=int, default=0, help="skip the file's first START entries (to resume a run)")
+    parser.add_argument("--stop", type=int, default=None, help="only the file's first STOP entries")
     args = parser.parse_args()
     if not os.path.exists(UNIT):
         sys.exit("no unit test binary at %s: run ./scripts/build.sh first" % UNIT)
     with open(os.path.join(ROOT, "tests", "stage_breaks.json")) as f:
-        breaks = [b for b in json.load(f)[args.start:] if args.match in b["stage"] + " " + b["change"]]
+        breaks = [b for b in json.load(f)[args.start:args.stop] if args.match in b["stage"] + " " + b["change"]]
     # A SIGTERM ends the run through the finally below, which puts the file back.
     signal.signal(signal.SIGTERM, lambda *_: sys.exit("terminated"))
     bad = 0
