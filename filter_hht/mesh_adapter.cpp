@@ -29,6 +29,11 @@ bool read_mesh_to_filter(const CMeshO& m, hht::Positions& positions, hht::Faces&
   const Eigen::Index vertices = positions.rows();
   hht::FilterInputReport report;
   hht::prepare_filter_input(positions, faces, true, map, report);
+  if (report.repeated_faces > 0)
+    log(QString("Repeated faces: %1 of %2 faces have the same three vertices as another: the filter worked without "
+                "the repeats, which add no surface; the mesh keeps them (Cleaning and Repairing > Remove Duplicate "
+                "Faces removes them for good)")
+            .arg(report.repeated_faces).arg(m.FN()));
   if (report.merged > 0)
     log(QString("Seams: %1 of %2 vertices sat exactly on another at a border (faces not joined there, as in a "
                 "triangle soup or a mesh cut at texture seams): the filter worked on them merged%3 and gives each "
@@ -50,8 +55,8 @@ bool read_mesh_to_filter(const CMeshO& m, hht::Positions& positions, hht::Faces&
   else if (!repair.done && !repair.why_not.empty())
     log(QString("Orientation: the faces could not be checked: %1").arg(QString::fromStdString(repair.why_not)));
   if (report.cut_edges > 0) {
-    log(QString("Non-manifold: %1 shared by more than two faces (a fin on the surface, sheets meeting along an edge, a "
-                "face given twice): the filter worked on each side of them apart, on copies of their vertices (%2 more), "
+    log(QString("Non-manifold: %1 shared by more than two faces (a fin on the surface, sheets meeting along an edge)"
+                ": the filter worked on each side of them apart, on copies of their vertices (%2 more), "
                 "and gives each vertex the result of its copy inside the surface, so the mesh stays as "
                 "connected as it was (Cleaning and Repairing > Repair non Manifold Edges makes it manifold for good, by "
                 "removing faces)")

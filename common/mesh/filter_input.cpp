@@ -1,5 +1,7 @@
 #include "mesh/filter_input.h"
 
+#include <algorithm>
+#include <array>
 #include <numeric>
 
 namespace hht {
@@ -7,8 +9,8 @@ namespace hht {
 namespace {
 
 // For each of the first `n` rows, the row whose result it takes: itself or one of its copies (the
-// rows from n on, `copy_of`), one inside a surface before one on a border (a fin's or a repeated
-// face's copy lies on a border), then the one with the most face area around it. `table` is the
+// rows from n on, `copy_of`), one inside a surface before one on a border (a fin's copy of its foot
+// lies on a border), then the one with the most face area around it. `table` is the
 // corner table before the split, whose borders the split keeps; `faces` are after it.
 std::vector<int> result_rows(const Positions& positions, const Faces& faces, const CornerTable& table,
                              const std::vector<int>& copy_of, int n) {
@@ -33,6 +35,35 @@ std::vector<int> result_rows(const Positions& positions, const Faces& faces, con
   return result;
 }
 
+// Drops every face with the same three vertices as an earlier one, in either orientation (an
+// export's repeats): it adds no surface to filter, and its edges would hold more than two faces,
+// which the pairing can leave tangled (a face given twice beside one given three times kept an
+// edge of three faces after the split). Returns how many were dropped.
+int drop_repeated_faces(Faces& faces) {
+  const Eigen::Index nf = faces.rows();
+  std::vector<std::pair<std::array<int, 3>, Eigen::Index>> keyed(static_cast<size_t>(nf));
+  for (Eigen::Index f = 0; f < nf; ++f) {
+    std::array<int, 3> key{faces(f, 0), faces(f, 1), faces(f, 2)};
+    std::sort(key.begin(), key.end());
+    keyed[static_cast<size_t>(f)] = {key, f};
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<char> repeat(static_cast<size_t>(nf), 0);
+  int dropped = 0;
+  for (size_t k = 1; k < keyed.size(); ++k)
+    if (keyed[k].first == keyed[k - 1].first) {
+      repeat[static_cast<size_t>(keyed[k].second)] = 1;
+      ++dropped;
+    }
+  if (dropped == 0) return 0;
+  Faces kept(nf - dropped, 3);
+  Eigen::Index row = 0;
+  for (Eigen::Index f = 0; f < nf; ++f)
+    if (!repeat[static_cast<size_t>(f)]) kept.row(row++) = faces.row(f);
+  faces = std::move(kept);
+  return dropped;
+}
+
 }  // namespace
 
 void prepare_filter_input(Positions& positions, Faces& faces, bool mend, InputMap& map, FilterInputReport& report) {
@@ -44,10 +75,19 @@ void prepare_filter_input(Positions& positions, Faces& faces, bool mend, InputMa
   const auto build = [&] {
     return build_corner_table_cutting(faces, positions, table, inconsistent, cut, error);
   };
+  // Repeated faces make edges of more than two faces, so they are looked for only where there are
+  // such edges: before the merge and again after it, which can make repeats of a soup's faces.
+  const auto drop_repeats = [&] {
+    if (cut == 0) return true;
+    const int dropped = drop_repeated_faces(faces);
+    report.repeated_faces += dropped;
+    return dropped == 0 || build();
+  };
   if (!build()) return;  // faces out of range or repeating a vertex: the filter says so
   // Edges of more than two faces: without `mend` no step applies (the filter says so, or works
   // without); with it, the faces the table left unpaired there come apart in the split.
   if (cut > 0 && !mend) return;
+  if (mend && !drop_repeats()) return;
   BorderWeld weld;
   if (mend && weld_coincident_border_vertices(positions, faces, table, weld, report.not_merged_why)) {
     positions = std::move(weld.positions);
@@ -55,7 +95,7 @@ void prepare_filter_input(Positions& positions, Faces& faces, bool mend, InputMa
     map.row_of = std::move(weld.welded_of);
     report.merged = weld.merged;
     report.dropped_faces = weld.dropped_faces;
-    if (!build()) return;
+    if (!build() || !drop_repeats()) return;
   }
   // Seams the merge refused on a mesh with such edges: the parts filtered apart would open at the
   // seams; the filter refuses the edges as it did before they were split.

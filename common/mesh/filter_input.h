@@ -1,11 +1,11 @@
-// The surface a filter works on, made whole from what MeshLab holds: border vertices at the same
-// position merged (border_weld.h: a triangle soup, a surface cut at seams), faces oriented against
-// their neighbours turned (coherent_orientation.h), then vertices where several fans of faces meet
-// split, one per fan (vertex_split.h), the faces of an edge of more than two paired sheet by sheet
-// first, so that the faces left over get vertices of their own (a fin on a surface, two sheets
-// through one edge, a face given twice). One corner table serves all three unless the merge or the
-// orientation changes the faces (0.5 s at 3.3M faces, half of it the walk over the fans;
-// docs/quality.md items 42-44).
+// The surface a filter works on, made whole from what MeshLab holds: faces repeating another's
+// three vertices left out, border vertices at the same position merged (border_weld.h: a triangle
+// soup, a surface cut at seams), faces oriented against their neighbours turned
+// (coherent_orientation.h), then vertices where several fans of faces meet split, one per fan
+// (vertex_split.h), the faces of an edge of more than two paired sheet by sheet first, so that the
+// faces left over get vertices of their own (a fin on a surface, two sheets through one edge). One
+// corner table serves all of it unless the merge, the repeats or the orientation change the faces
+// (0.5 s at 3.3M faces, half of it the walk over the fans; docs/quality.md items 42-44 and 48).
 #pragma once
 
 #include "mesh/border_weld.h"
@@ -20,8 +20,8 @@ namespace hht {
 // Which row of the filter's arrays each input vertex became. `row_of` empty: row i is vertex i;
 // `copy_of`: the rows appended by the split, each the row it copies; `result_of` (with copies): for
 // each row before them, the row whose result it takes: itself or a copy, one inside a surface
-// before one on a border (the surface a fin or a repeated face stands on, not the fin or the face),
-// then the one with the most face area around it.
+// before one on a border (the surface a fin stands on, not the fin), then the one with the most
+// face area around it.
 struct InputMap {
   std::vector<int> row_of;
   std::vector<int> copy_of;
@@ -31,6 +31,7 @@ struct InputMap {
 };
 
 struct FilterInputReport {
+  int repeated_faces = 0;       // faces with the same three vertices as another, left out
   int merged = 0;               // vertices merged into another
   int dropped_faces = 0;        // faces the merge left with no area
   std::string not_merged_why;   // border vertices on each other, left apart: why
@@ -39,10 +40,10 @@ struct FilterInputReport {
   int split = 0;                // vertices added by splitting non-manifold ones (and cut edges)
 };
 
-// Orients `positions` and `faces` in place and, with `mend`, merges the seams first and splits the
-// non-manifold vertices and edges last (edges of more than two faces are left as they are without
-// `mend`, and where the merge refuses seams on such a mesh: the parts filtered apart would open at
-// them); `map` says where each input vertex went.
+// Orients `positions` and `faces` in place and, with `mend`, leaves the repeated faces out and
+// merges the seams first and splits the non-manifold vertices and edges last (edges of more than
+// two faces are left as they are without `mend`, and where the merge refuses seams on such a mesh:
+// the parts filtered apart would open at them); `map` says where each input vertex went.
 void prepare_filter_input(Positions& positions, Faces& faces, bool mend, InputMap& map, FilterInputReport& report);
 
 // A filter's result (one row per row of its arrays) as one row per input vertex: each vertex gets

@@ -134,36 +134,62 @@ TEST(FilterInput, CutsEdgesOfMoreThanTwoFacesIntoTheirSides) {
   }
 }
 
-// A sphere with every third face given twice (as some exports repeat faces; neighbouring faces among
-// them, so a repeated face's edges meet other repeated faces) and two reversed: the sphere keeps its
-// own faces and stays closed, each repeated face comes off on vertices of its own, and every vertex
-// takes its row on the sphere. Without the rule that ties go to the faces that come first, a face
-// and its repeat split the sphere's edges between them and leave it slit.
-TEST(FilterInput, TakesARepeatedFaceOffTheSurface) {
+// A sphere with faces repeated as exports repeat them: every third face given twice (neighbouring
+// faces among them, two repeats reversed), and then one face given twice beside one given three
+// times (the edge between them holds five faces). The filter works on the sphere itself: the
+// repeats left out and counted, the faces as they were, no vertex copied, a closed manifold. Before
+// the repeats were left out, they came off the surface on vertices of their own by the pairing, and
+// the second mesh kept an edge of three faces after the split and was refused (a fuzz through
+// meshlabserver found it: 5% of bull's faces repeated at random).
+TEST(FilterInput, LeavesRepeatedFacesOut) {
   const ArrayMesh m = sphere(3);
-  const int nf = static_cast<int>(m.faces.rows()), n = m.vertices();
-  std::vector<int> repeated;
-  for (int f = 0; f < nf; f += 3) repeated.push_back(f);
-  Faces faces(nf + static_cast<int>(repeated.size()), 3);
-  faces.topRows(nf) = m.faces;
-  for (size_t k = 0; k < repeated.size(); ++k) faces.row(nf + static_cast<int>(k)) = m.faces.row(repeated[k]);
-  std::swap(faces(nf, 1), faces(nf, 2));
-  std::swap(faces(nf + 1, 1), faces(nf + 1, 2));
-  const Prepared in = prepared(m.positions, faces);
-  const int rows = static_cast<int>(in.positions.rows());
-  EXPECT_GT(in.report.cut_edges, 0);
-  EXPECT_TRUE(in.faces.topRows(nf) == m.faces) << "the sphere's own faces were moved to copies";
+  const int nf = static_cast<int>(m.faces.rows());
+  std::vector<int> every_third;
+  for (int f = 0; f < nf; f += 3) every_third.push_back(f);
+  CornerTable sphere_table;
+  int inconsistent = -1;
+  std::string error;
+  ASSERT_TRUE(build_corner_table(m.faces, m.vertices(), sphere_table, inconsistent, error)) << error;
+  const int a = 0, b = corner_triangle(sphere_table.opposite[0]);  // face 0 and a neighbour
+  for (const std::vector<int>& repeated : {every_third, std::vector<int>{a, b, b}}) {
+    Faces faces(nf + static_cast<int>(repeated.size()), 3);
+    faces.topRows(nf) = m.faces;
+    for (size_t k = 0; k < repeated.size(); ++k) faces.row(nf + static_cast<int>(k)) = m.faces.row(repeated[k]);
+    std::swap(faces(nf, 1), faces(nf, 2));
+    std::swap(faces(nf + 1, 1), faces(nf + 1, 2));
+    const Prepared in = prepared(m.positions, faces);
+    EXPECT_EQ(in.report.repeated_faces, static_cast<int>(repeated.size()));
+    EXPECT_EQ(in.report.cut_edges, 0);
+    EXPECT_TRUE(in.map.identity());
+    EXPECT_TRUE(in.faces == m.faces) << "the sphere's own faces changed";
+    CornerTable table;
+    ASSERT_TRUE(build_corner_table(in.faces, static_cast<int>(in.positions.rows()), table, inconsistent, error))
+        << repeated.size() << " repeats: " << error;
+    for (int c = 0; c < table.corners(); ++c) EXPECT_GE(table.opposite[c], 0) << "the sphere is open";
+  }
+}
+
+// A soup of the sphere with a face given twice: the merge makes the repeat, which is then left out,
+// and the soup comes out as the sphere.
+TEST(FilterInput, LeavesOutTheRepeatsTheMergeMakes) {
+  const ArrayMesh m = sphere(2);
+  const int nf = static_cast<int>(m.faces.rows());
+  Positions soup(3 * (nf + 1), 3);
+  Faces faces(nf + 1, 3);
+  for (int f = 0; f <= nf; ++f) {
+    for (int k = 0; k < 3; ++k) soup.row(3 * f + k) = m.positions.row(m.faces(f < nf ? f : 7, k));
+    faces.row(f) << 3 * f, 3 * f + 1, 3 * f + 2;
+  }
+  const Prepared in = prepared(soup, faces);
+  EXPECT_EQ(in.report.repeated_faces, 1);
+  EXPECT_EQ(in.report.cut_edges, 0);
+  EXPECT_EQ(in.positions.rows(), m.vertices());
+  EXPECT_EQ(in.faces.rows(), nf);
   CornerTable table;
   int inconsistent = -1;
   std::string error;
-  ASSERT_TRUE(build_corner_table(in.faces, rows, table, inconsistent, error)) << error;
-  EXPECT_EQ(count_nonmanifold_vertices(table, rows), 0);
-  int sphere_border = 0;
-  for (int c = 0; c < 3 * nf; ++c) sphere_border += table.opposite[c] < 0;
-  EXPECT_EQ(sphere_border, 0) << "the sphere is slit";
-  Eigen::VectorXd values = Eigen::VectorXd::Constant(rows, -1);
-  values.head(n).setConstant(1);
-  EXPECT_EQ(to_input_vertices(values, in.map).minCoeff(), 1) << "a vertex took its repeated face's row";
+  ASSERT_TRUE(build_corner_table(in.faces, static_cast<int>(in.positions.rows()), table, inconsistent, error)) << error;
+  for (int c = 0; c < table.corners(); ++c) EXPECT_GE(table.opposite[c], 0) << "the soup did not close";
 }
 
 // An edge shared by very many faces (a book of pages, as a broken export can hold) is prepared into
