@@ -186,7 +186,10 @@ QString estimate_source_text(const hht::NoiseEstimate& e) {
                  "so the IMF read the triangulation, not noise%4")
       .arg(100 * e.imf_sigma / e.mean_edge, 0, 'f', 1).arg(hht::kFlatHingeBound)
       .arg(100 * e.hinge_sigma / e.mean_edge, 0, 'f', 2)
-      .arg(e.relative() < hht::kNoiseFree ? "; the mesh reads as noise-free and is left as it is" : "");
+      .arg(e.relative() < hht::kNoiseFree ? "; the mesh reads as noise-free and is left as it is (so does a noisy mesh "
+                                            "cut into flat pieces afterwards, as Midpoint subdivision cuts each face "
+                                            "into four)"
+                                          : "");
 }
 
 }  // namespace
