@@ -32,11 +32,12 @@ struct FlatHingeSpikes {
   bool impulsive() const;  // spikes enough to read impulsive noise (kMinSpikes, kSpikeShare)
 };
 
-// Flat: |height| within kHingeFlatness of the hinge's edge length, plus the float rounding of
-// coordinates of its magnitude (exports keep 6-7 digits). A flat hinge touches a corner only if
+// Flat: |height| within kHingeFlatness of the hinge's edge length, plus kCoordinateRounding of the
+// coordinates' magnitude (exports keep 6-7 digits). A flat hinge touches a corner only if
 // the other three span a plane (twice their triangle's area at least kSpanningCorners of its
 // longest edge squared): three corners on a line hold every position of the fourth.
 constexpr double kHingeFlatness = 1e-5;
+constexpr double kCoordinateRounding = 1e-6;
 constexpr double kSpanningCorners = 0.01;
 constexpr unsigned char kOnFlatHinge = 1, kSpike = 2;
 
@@ -46,6 +47,16 @@ constexpr unsigned char kOnFlatHinge = 1, kSpike = 2;
 constexpr int kMinSpikes = 5;
 constexpr double kSpikeShare = 0.025;
 constexpr double kSpikeBend = 1e-2;
+
+// Flat hinges count only where they stand out from hinges bent by less than the allowance by
+// chance: far from the origin for its size a mesh's coordinates round to a sizeable part of an
+// edge, and Gaussian noise then leaves hinges within that allowance (4.5e4 mean edges from the
+// origin, a fifth of elephant's at 10% noise), about as many as bend by one to two allowances.
+// Exactly flat hinges crowd below it: they stand out when the hinges bent by one to two allowances
+// number at most kChanceFlatRatio of those within one (docs/quality.md item 48). Further out, where
+// the allowance passes the noise's own bend, nearly every hinge lies within it and none stands out
+// as a spike.
+constexpr double kChanceFlatRatio = 0.5;
 
 // `adjacency` is vertex_adjacency() of the same faces. Boundary vertices are left out.
 FlatHingeSpikes flat_hinge_spikes(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency);
