@@ -147,6 +147,15 @@ std::string noisy_fandisk(bool misoriented, const std::string& name, Faces& face
   return path;
 }
 
+// `run`'s saved positions are `reference`'s, to 1e-9 of the diagonal; `what` says what differs if not.
+void expect_same_positions(const ServerRun& reference, const ServerRun& run, const std::string& what) {
+  const Positions expected = positions_of(reference), result = positions_of(run);
+  ASSERT_GT(expected.rows(), 0);
+  ASSERT_EQ(result.rows(), expected.rows());
+  const double difference = (result - expected).rowwise().norm().maxCoeff();
+  EXPECT_LT(difference, 1e-9 * bounding_box_diagonal(expected)) << what << " by " << difference;
+}
+
 // Each script that moves vertices, on a noisy Fandisk with a third of its faces oriented against
 // their neighbours (as STL exports and some scans come), gives the result it gives on the same
 // mesh coherently oriented, says so in the log, and leaves the mesh's faces as they were. Before,
@@ -162,12 +171,7 @@ TEST_P(MisorientedFaces, GiveTheCoherentMeshsResult) {
       run_script(MeshLab::V2020, {noisy_fandisk(false, tag + "_coherent_input", coherent)}, resource(script), tag + "_coherent");
   const ServerRun run = run_script(MeshLab::V2020, {noisy_fandisk(true, tag + "_misoriented_input", misoriented)},
                                    resource(script), tag + "_misoriented");
-  const Positions expected = positions_of(reference), result = positions_of(run);
-  ASSERT_GT(expected.rows(), 0);
-  ASSERT_EQ(result.rows(), expected.rows());
-  const double difference = (result - expected).rowwise().norm().maxCoeff();
-  EXPECT_LT(difference, 1e-9 * bounding_box_diagonal(expected))
-      << "the misoriented mesh's result differs from the coherent one's by " << difference;
+  expect_same_positions(reference, run, "the misoriented mesh's result differs from the coherent one's");
   const int flipped = static_cast<int>((coherent.rows() + 2) / 3);
   EXPECT_NE(run.log.find("Orientation: " + std::to_string(flipped) + " of " + std::to_string(coherent.rows()) + " faces"),
             std::string::npos)
@@ -224,12 +228,7 @@ TEST_P(RepeatedFaces, AreLeftOutOfTheFiltersCopy) {
   ASSERT_EQ(vcg::tri::io::ExporterPLY<TriMesh>::Save(m, input.c_str(), 0, true), 0);
   const ServerRun run = run_script(MeshLab::V2020, {input}, resource(script), tag + "_repeated");
   ASSERT_EQ(run.exit_code, 0) << run.log;
-  const Positions expected = positions_of(reference), result = positions_of(run);
-  ASSERT_GT(expected.rows(), 0);
-  ASSERT_EQ(result.rows(), expected.rows());
-  const double difference = (result - expected).rowwise().norm().maxCoeff();
-  EXPECT_LT(difference, 1e-9 * bounding_box_diagonal(expected))
-      << "the result with repeats differs from Fandisk's by " << difference;
+  expect_same_positions(reference, run, "the result with repeats differs from Fandisk's");
   EXPECT_NE(run.log.find("Repeated faces: " + std::to_string(repeats.size()) + " of " +
                          std::to_string(nf + static_cast<Eigen::Index>(repeats.size())) + " faces"),
             std::string::npos)
