@@ -10,40 +10,19 @@ namespace hht {
 
 bool FlatHingeSpikes::impulsive() const { return spikes >= kMinSpikes && share() >= kSpikeShare; }
 
-namespace {
-
-// How far a hinge may bend and still count as flat: kHingeFlatness of its edge plus the rounding of
-// coordinates of its magnitude.
-double flatness_allowed(const Positions& positions, const Hinge& h, double& edge) {
-  const Eigen::Vector3d a = positions.row(h.a), b = positions.row(h.b);
-  edge = (b - a).norm();
-  return kHingeFlatness * edge + kCoordinateRounding * a.cwiseAbs().maxCoeff();
-}
-
-// Whether the hinges within their allowance stand out from those bent by one to two allowances
-// (see kChanceFlatRatio).
-bool flat_hinges_stand_out(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency) {
-  long within = 0, next = 0;
-  for_each_hinge(positions, faces, adjacency, [&](const Hinge& h) {
-    double edge = 0;
-    const double allowed = flatness_allowed(positions, h, edge), height = std::abs(h.height);
-    within += height <= allowed;
-    next += height > allowed && height <= 2 * allowed;
-  });
-  return within > 0 && static_cast<double>(next) <= kChanceFlatRatio * static_cast<double>(within);
-}
-
-}  // namespace
-
 FlatHingeSpikes flat_hinge_spikes(const Positions& positions, const Faces& faces, const VertexAdjacency& adjacency) {
   const size_t n = static_cast<size_t>(adjacency.vertices());
   std::vector<unsigned char> touches_flat(n, 0);
   std::vector<int> hinges(n, 0), bent(n, 0);
-  const bool judged = flat_hinges_stand_out(positions, faces, adjacency);
+  long within = 0, next = 0;  // hinges within their allowance, and bent by one to two of it
   for_each_hinge(positions, faces, adjacency, [&](const Hinge& h) {
-    double edge = 0;
-    const double allowed = flatness_allowed(positions, h, edge), height = std::abs(h.height);
-    const bool flat = judged && height <= allowed;
+    const Eigen::Vector3d a = positions.row(h.a), b = positions.row(h.b);
+    const double edge = (b - a).norm();
+    const double height = std::abs(h.height);
+    const double allowed = kHingeFlatness * edge + kCoordinateRounding * a.cwiseAbs().maxCoeff();
+    const bool flat = height <= allowed;
+    within += flat;
+    next += !flat && height <= 2 * allowed;
     const int corners[4] = {h.a, h.b, h.c, h.d};
     for (int k = 0; k < 4; ++k) {
       const size_t i = static_cast<size_t>(corners[k]);
@@ -57,6 +36,9 @@ FlatHingeSpikes flat_hinge_spikes(const Positions& positions, const Faces& faces
       touches_flat[i] = (q - p).cross(r - p).norm() >= kSpanningCorners * longest;
     }
   });
+  // Hinges within the allowance by chance, about as many as bend by one to two of it, are no flat part.
+  if (static_cast<double>(next) > kChanceFlatRatio * static_cast<double>(within))
+    std::fill(touches_flat.begin(), touches_flat.end(), 0);
   FlatHingeSpikes out;
   out.role.assign(n, 0);
   for (size_t i = 0; i < n; ++i) out.role[i] = touches_flat[i] ? kOnFlatHinge : 0;
